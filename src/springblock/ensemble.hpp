@@ -1,0 +1,59 @@
+#pragma once
+// Repetitions of one scene with independent seeded draws, run in parallel over repetitions.
+// Repetition r always uses the stream rep_seed(seed, r) and its result is stored at index r,
+// so the summary is identical whatever the thread count.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "springblock/observe/friction_observer.hpp"
+#include "springblock/scene.hpp"
+
+namespace sb {
+
+struct RunResult {
+  int rep = 0;
+  bool slipped = false;  // a first macroscopic slip was found before the end of the run
+  double mu_s = 0, t_peak_s = 0, t_slip_s = 0, max_mu = 0;
+  double mu_d = 0, mu_d_signed = 0;
+  std::int64_t window_samples = 0;
+  std::int64_t steps = 0, rhs_evals = 0, switches = 0;
+  double t_end_s = 0;
+  double wall_s = 0;
+  double contact_fraction = 0;
+  std::vector<Sample> series;            // repetition 0 only, when asked
+  std::vector<StressSnapshot> stress;    // repetition 0 only, when asked
+};
+
+struct Statistic {
+  double mean = 0, std = 0, sem = 0;
+  int n = 0;  // repetitions that contributed (those with a defined value)
+};
+Statistic summarize(const std::vector<double>& values);
+
+struct EnsembleResult {
+  std::vector<RunResult> runs;
+  Statistic mu_s, mu_d, mu_d_signed, t_peak_s;
+  double contact_fraction = 0;
+  double wall_s = 0;
+  int threads = 1;
+  bool interrupted = false;
+  int finished_reps = 0;
+};
+
+// Runs one repetition (used by the ensemble, the tests and the benchmarks).
+RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* interrupt = nullptr,
+                         std::atomic<std::int64_t>* progress_ns = nullptr);
+
+// `progress` (optional) is called from a reporter thread about once a second with the
+// fraction of simulated time done and the elapsed wall seconds.
+EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interrupt = nullptr,
+                            std::function<void(double fraction, double elapsed_s)> progress = {});
+
+void to_json(nlohmann::json& j, const Statistic& s);
+void to_json(nlohmann::json& j, const RunResult& r);
+
+}  // namespace sb

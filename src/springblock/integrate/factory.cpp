@@ -1,0 +1,17 @@
+#include "springblock/integrate/integrator.hpp"
+#include "springblock/integrate/rk4.hpp"
+#include "springblock/units.hpp"
+
+namespace sb {
+
+std::unique_ptr<Integrator> make_integrator(const RunControl& rc) {
+  switch (rc.method) {
+    case Method::RK4:
+      return std::make_unique<Rk4>(rc.dt_s);
+    case Method::Event:
+      break;
+  }
+  throw InputError("method", "the event-driven integrator is not available in this build");
+}
+
+}  // namespace sb

@@ -1,0 +1,23 @@
+#pragma once
+// Time steppers. An integrator advances a Chain's State to t_end, calling the observer at
+// t = 0 and every sample_dt; it owns the stick/slip switching rules it implements.
+#include <memory>
+#include <string>
+
+#include "springblock/model.hpp"
+#include "springblock/observe/observer.hpp"
+#include "springblock/scene.hpp"
+#include "springblock/state.hpp"
+
+namespace sb {
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual void run(const Chain& chain, State& state, double t_end, double sample_dt, Observer& obs) = 0;
+  virtual std::string name() const = 0;
+};
+
+std::unique_ptr<Integrator> make_integrator(const RunControl& rc);
+
+}  // namespace sb

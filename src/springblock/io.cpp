@@ -1,0 +1,95 @@
+#include "springblock/io.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <thread>
+
+#ifndef SPRINGBLOCK_COMMIT
+#define SPRINGBLOCK_COMMIT "unknown"
+#endif
+#ifndef SPRINGBLOCK_VERSION
+#define SPRINGBLOCK_VERSION "0"
+#endif
+
+namespace sb {
+
+void write_file_atomic(const std::string& path, const std::string& content) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot create " + tmp);
+  std::size_t done = 0;
+  while (done < content.size()) {
+    ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n <= 0) {
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      throw std::runtime_error("cannot write " + tmp);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  ::fsync(fd);
+  ::close(fd);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot rename " + tmp + " to " + path);
+  }
+}
+
+nlohmann::json provenance(const std::string& command_line) {
+  std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return {{"program", "springblock"},
+          {"version", SPRINGBLOCK_VERSION},
+          {"commit", SPRINGBLOCK_COMMIT},
+          {"command", command_line},
+          {"utc", stamp},
+          {"hardware_threads", std::thread::hardware_concurrency()}};
+}
+
+nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const std::string& command_line) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& run : r.runs) runs.push_back(run);
+  std::int64_t steps = 0, rhs = 0;
+  int slipped = 0;
+  for (const auto& run : r.runs) steps += run.steps, rhs += run.rhs_evals, slipped += run.slipped;
+  return {{"mu_s", r.mu_s},
+          {"mu_d", r.mu_d},
+          {"mu_d_signed", r.mu_d_signed},
+          {"t_peak_s", r.t_peak_s},
+          {"reps", scene.reps},
+          {"reps_slipped", slipped},
+          {"seed", scene.seed},
+          {"contact_fraction", r.contact_fraction},
+          {"method", method_name(scene.run.method)},
+          {"dt", scene.run.dt_s},
+          {"tol", scene.run.tol},
+          {"duration", scene.duration()},
+          {"wall_seconds", r.wall_s},
+          {"threads", r.threads},
+          {"steps_total", steps},
+          {"rhs_evals_total", rhs},
+          {"scene", scene},
+          {"runs", runs},
+          {"provenance", provenance(command_line)}};
+}
+
+std::string series_tsv(const Scene& scene, const EnsembleResult& r, const std::string& command_line) {
+  nlohmann::json meta = {{"scene", scene}, {"provenance", provenance(command_line)},
+                         {"wall_seconds", r.wall_s}};
+  std::string out = "# springblock mu(t) series of repetition 0\n# " + meta.dump() + "\n";
+  out += "t_s\tmu\tmu_signed\tn_sliding\n";
+  if (!r.runs.empty())
+    for (const auto& s : r.runs[0].series)
+      out += fmt::format("{:.9g}\t{:.9g}\t{:.9g}\t{}\n", s.t, s.mu, s.mu_signed, s.n_sliding);
+  return out;
+}
+
+}  // namespace sb

@@ -1,0 +1,29 @@
+#pragma once
+// Output files are written whole or not at all: to a temporary file beside the target, then
+// renamed over it. Every results file carries the metadata needed to reproduce it.
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "springblock/ensemble.hpp"
+#include "springblock/scene.hpp"
+
+namespace sb {
+
+// Write `content` to `path` atomically (temporary file in the same directory, fsync, rename).
+// Throws std::runtime_error naming the path on failure; no partial file is left behind.
+void write_file_atomic(const std::string& path, const std::string& content);
+
+// Provenance: program version, commit, command line, UTC time, host threads.
+nlohmann::json provenance(const std::string& command_line);
+
+// The full results object of an ensemble: the schema (mu_s, mu_d with mean/std/sem,
+// reps, seed, contact_fraction, method, dt, duration, wall_seconds) plus the scene, derived
+// parameters, per-repetition values and provenance.
+nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& result,
+                             const std::string& command_line);
+
+// mu(t) series of repetition 0 as TSV with a commented header of the same metadata.
+std::string series_tsv(const Scene& scene, const EnsembleResult& result, const std::string& command_line);
+
+}  // namespace sb

@@ -1,0 +1,55 @@
+#include "springblock/observe/friction_observer.hpp"
+
+#include <cmath>
+
+namespace sb {
+
+void FrictionObserver::sample(const Chain& c, const State& s) {
+  double sum_abs = 0, sum_signed = 0;
+  int n_sliding = 0;
+  for (int i = 0; i < c.N; ++i) {
+    if (!c.contact[i]) continue;
+    const double f = friction_force(c, s, i);
+    sum_abs += std::fabs(f);
+    sum_signed += f;
+    n_sliding += s.dir[i] != 0;
+  }
+  const double mu = sum_abs / cfg_.F_load;
+  const double mu_signed = sum_signed / cfg_.F_load;
+  last_t_ = s.t;
+
+  if (!slipped_) {
+    if (mu > running_max_) {
+      running_max_ = mu;
+      t_max_ = s.t;
+    } else if (mu < running_max_ - cfg_.peak_drop) {
+      // First macroscopic slip: mu_s is the peak reached before it.
+      slipped_ = true;
+      t_slip_ = s.t;
+    }
+  } else if (s.t >= t_slip_ + cfg_.mu_d_skip_s) {
+    sum_mu_ += mu;
+    sum_mu_signed_ += mu_signed;
+    ++n_window_;
+  }
+
+  if (cfg_.keep_series) series_.push_back({s.t, mu, mu_signed, n_sliding});
+  while (next_stress_ < cfg_.stress_times_s.size() && s.t >= cfg_.stress_times_s[next_stress_]) {
+    StressSnapshot snap{s.t, std::vector<double>(c.N), std::vector<double>(c.N)};
+    for (int i = 0; i < c.N; ++i) {
+      const double f = friction_force(c, s, i);
+      snap.f_over_Fn[i] = c.contact[i] ? f / c.F_n : 0.0;
+      snap.sigma_over_P[i] = f / cfg_.block_area_P;
+    }
+    stress_.push_back(std::move(snap));
+    ++next_stress_;
+  }
+  if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(s.t * 1e9), std::memory_order_relaxed);
+}
+
+bool FrictionObserver::wants_stop() const {
+  if (cfg_.interrupt && cfg_.interrupt->load(std::memory_order_relaxed)) return true;
+  return cfg_.stop_after_mu_s && slipped_ && next_stress_ >= cfg_.stress_times_s.size();
+}
+
+}  // namespace sb

@@ -1,0 +1,18 @@
+#pragma once
+// Observers see the chain at sample times; integrators call them and never compute
+// observables themselves (odeint's observer concept).
+#include "springblock/model.hpp"
+#include "springblock/state.hpp"
+
+namespace sb {
+
+class Observer {
+ public:
+  virtual ~Observer() = default;
+  // Called at t = 0 and then at every sample time with the state at exactly that time.
+  virtual void sample(const Chain& chain, const State& state) = 0;
+  // An observer may end the run early (mu_s-only scenes, interruption).
+  virtual bool wants_stop() const { return false; }
+};
+
+}  // namespace sb

@@ -1,0 +1,207 @@
+#include "springblock/scene.hpp"
+
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+
+#include <cmath>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "springblock/scene_fields.hpp"
+#include "springblock/units.hpp"
+
+namespace sb {
+
+std::string method_name(Method m) { return m == Method::RK4 ? "rk4" : "event"; }
+
+Method parse_method(const std::string& text) {
+  if (text == "rk4") return Method::RK4;
+  if (text == "event") return Method::Event;
+  throw InputError("method", "'" + text + "' is not one of: rk4, event");
+}
+
+double Scene::t0_s() const {
+  const auto d = derived();
+  auto mask = build_contact_mask(pattern, geometry.N, 0);
+  double fraction = pattern.kind == SurfaceKind::Random ? 1.0 - pattern.groove_fraction
+                                                         : contact_fraction(mask);
+  const double F_n = d.F_load_N / (fraction * geometry.N);
+  return friction.mu_s_mean * F_n / (d.K_s_N_per_m * material.v_m_per_s);
+}
+
+double Scene::duration() const { return run.duration_s > 0 ? run.duration_s : run.duration_t0 * t0_s(); }
+
+namespace {
+
+std::string str(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
+void require(bool ok, const std::string& field, double value, const std::string& range) {
+  if (!ok) throw InputError(field, "value " + str(value) + " is outside the allowed range " + range);
+}
+
+bool finite(double x) { return std::isfinite(x); }
+
+}  // namespace
+
+void validate(const Scene& s) {
+  const auto& m = s.material;
+  require(finite(s.geometry.L_x_m) && s.geometry.L_x_m > 0 && s.geometry.L_x_m <= 100, "length",
+          s.geometry.L_x_m, "(0, 100 m]");
+  require(finite(m.G_Pa) && m.G_Pa > 0 && m.G_Pa < 1e13, "shear_modulus", m.G_Pa, "(0, 1e13 Pa)");
+  require(finite(m.E_Pa) && m.E_Pa > 0 && m.E_Pa < 1e13, "young_modulus", m.E_Pa, "(0, 1e13 Pa)");
+  require(finite(m.rho_kg_per_m3) && m.rho_kg_per_m3 > 0 && m.rho_kg_per_m3 < 1e6, "density",
+          m.rho_kg_per_m3, "(0, 1e6 kg/m3)");
+  require(finite(m.P_Pa) && m.P_Pa > 0 && m.P_Pa < 1e12, "pressure", m.P_Pa, "(0, 1e12 Pa)");
+  require(finite(m.gamma_per_s) && m.gamma_per_s >= 0 && m.gamma_per_s < 1e12, "damping",
+          m.gamma_per_s, "[0, 1e12 /s)");
+  require(finite(m.v_m_per_s) && m.v_m_per_s > 0 && m.v_m_per_s < 1e3, "velocity", m.v_m_per_s,
+          "(0, 1000 m/s)");
+  require(finite(m.l_y_m) && m.l_y_m > 0 && m.l_y_m <= 100, "l_y", m.l_y_m, "(0, 100 m]");
+  require(finite(m.l_z_m) && m.l_z_m > 0 && m.l_z_m <= 100, "l_z", m.l_z_m, "(0, 100 m]");
+  const auto& f = s.friction;
+  require(finite(f.mu_s_mean) && f.mu_s_mean > 0 && f.mu_s_mean <= 100, "mu_s", f.mu_s_mean,
+          "(0, 100] for the mean");
+  require(finite(f.mu_s_sd) && f.mu_s_sd >= 0 && f.mu_s_sd <= 100, "mu_s", f.mu_s_sd, "[0, 100] for the SD");
+  require(finite(f.mu_d_mean) && f.mu_d_mean >= 0 && f.mu_d_mean <= 100, "mu_d", f.mu_d_mean,
+          "[0, 100] for the mean");
+  require(finite(f.mu_d_sd) && f.mu_d_sd >= 0 && f.mu_d_sd <= 100, "mu_d", f.mu_d_sd, "[0, 100] for the SD");
+  require(finite(s.k_int_scale) && s.k_int_scale >= 0 && s.k_int_scale <= 1e8, "k_int_scale",
+          s.k_int_scale, "[0, 1e8]");
+  require(s.reps >= 1, "reps", s.reps, "[1, 1000000]");
+
+  // Surface: build once to catch grooves longer than the chain or an empty contact set.
+  if (s.pattern.kind == SurfaceKind::Random) {
+    const double grooves = std::round(s.pattern.groove_fraction * s.geometry.N);
+    if (grooves >= s.geometry.N)
+      throw InputError("pattern", "random:" + str(s.pattern.groove_fraction) + " on N = " +
+                                      std::to_string(s.geometry.N) +
+                                      " leaves no block in contact; use a fraction < " +
+                                      str((s.geometry.N - 0.5) / s.geometry.N));
+  } else {
+    (void)build_contact_mask(s.pattern, s.geometry.N, 0);
+  }
+
+  const auto& r = s.run;
+  require(finite(r.sample_dt_s) && r.sample_dt_s > 0 && r.sample_dt_s <= 10, "sample_dt",
+          r.sample_dt_s, "(0, 10 s]");
+  if (r.duration_s > 0)
+    require(finite(r.duration_s) && r.duration_s <= 1e6, "duration", r.duration_s, "(0, 1e6 s]");
+  else
+    require(finite(r.duration_t0) && r.duration_t0 > 0 && r.duration_t0 <= 1e4, "duration",
+            r.duration_t0, "(0, 1e4] t0");
+  require(finite(r.tol) && r.tol >= 1e-14 && r.tol <= 1e-2, "tol", r.tol, "[1e-14, 1e-2]");
+  require(finite(r.dt_s) && r.dt_s > 0 && r.dt_s <= 1, "dt", r.dt_s, "(0, 1 s]");
+  if (r.method == Method::RK4) {
+    const double h_max = rk4_stable_dt(s.derived());
+    if (r.dt_s > h_max)
+      throw InputError("dt", "step " + str(r.dt_s) + " s exceeds the RK4 stability limit of this chain; "
+                             "the largest stable step is " + str(h_max) +
+                             " s (h * omega_max <= 2 sqrt 2, omega_max = sqrt((K_s + 4 K_int)/m))");
+    const double steps = s.duration() / r.dt_s;
+    require(steps <= 1e13, "dt", r.dt_s, "a run of at most 1e13 steps (duration / dt)");
+  }
+  require(finite(s.rules.peak_drop) && s.rules.peak_drop > 0 && s.rules.peak_drop <= 1, "peak_drop",
+          s.rules.peak_drop, "(0, 1]");
+  require(finite(s.rules.mu_d_skip_t0) && s.rules.mu_d_skip_t0 >= 0 && s.rules.mu_d_skip_t0 <= 1e3,
+          "mu_d_skip", s.rules.mu_d_skip_t0, "[0, 1000]");
+  for (double t : s.observe.stress_times_s)
+    require(finite(t) && t >= 0 && t <= s.duration(), "stress_times", t,
+            "[0, duration = " + str(s.duration()) + " s]");
+}
+
+std::uint64_t rep_seed(std::uint64_t seed, int rep) {
+  // SplitMix64 finaliser over (seed, rep): consecutive repetitions get unrelated streams.
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (static_cast<std::uint64_t>(rep) + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+Chain build_chain(const Scene& s, int rep) {
+  const auto d = s.derived();
+  Chain c;
+  c.N = s.geometry.N;
+  c.K_s = d.K_s_N_per_m;
+  c.K_int = d.K_int_N_per_m;
+  c.m = d.m_kg;
+  c.gamma = s.material.gamma_per_s;
+  c.v_slider = s.material.v_m_per_s;
+  const std::uint64_t seed = rep_seed(s.seed, rep);
+  c.contact = build_contact_mask(s.pattern, c.N, seed ^ 0x5DEECE66DULL);
+  c.n_contact = 0;
+  for (auto x : c.contact) c.n_contact += x;
+  c.F_load = d.F_load_N;
+  c.F_n = d.F_load_N / c.n_contact;  // the load is shared by the blocks still in contact
+
+  // GSL's generators and ziggurat Gaussian give the same stream on every platform, unlike
+  // std::normal_distribution.
+  std::unique_ptr<gsl_rng, decltype(&gsl_rng_free)> rng(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free);
+  gsl_rng_set(rng.get(), static_cast<unsigned long>(seed));
+  auto draw = [&](double mean, double sd) {
+    if (sd == 0) return mean;
+    for (int tries = 0; tries < 100000; ++tries) {
+      double x = mean + gsl_ran_gaussian_ziggurat(rng.get(), sd);
+      if (x >= 0) return x;  // truncation at 0: a negative friction coefficient is unphysical
+    }
+    throw InputError("mu_s", "the Gaussian is almost entirely below 0; raise the mean");
+  };
+  c.mu_s.resize(c.N);
+  c.mu_d.resize(c.N);
+  c.f_static.resize(c.N);
+  c.f_kinetic.resize(c.N);
+  for (int i = 0; i < c.N; ++i) {
+    // Draw for every block, groove or not, so the same seed gives the same coefficients on the
+    // shared pawl blocks of two surfaces: comparisons between patterns are paired.
+    double ms = draw(s.friction.mu_s_mean, s.friction.mu_s_sd);
+    double md = draw(s.friction.mu_d_mean, s.friction.mu_d_sd);
+    if (s.friction.pair_policy == FrictionDistribution::PairPolicy::Clip && md > ms) md = ms;
+    if (!c.contact[i]) ms = md = 0.0;
+    c.mu_s[i] = ms;
+    c.mu_d[i] = md;
+    c.f_static[i] = ms * c.F_n;
+    c.f_kinetic[i] = md * c.F_n;
+  }
+  return c;
+}
+
+void to_json(nlohmann::json& j, const Scene& s) {
+  j = nlohmann::json{{"material", s.material},
+                     {"geometry", s.geometry},
+                     {"friction", s.friction},
+                     {"k_int_scale", s.k_int_scale},
+                     {"pattern", s.pattern.text()},
+                     {"derived", s.derived()},
+                     {"method", method_name(s.run.method)},
+                     {"dt_s", s.run.dt_s},
+                     {"tol", s.run.tol},
+                     {"duration_s", s.duration()},
+                     {"t0_s", s.t0_s()},
+                     {"sample_dt_s", s.run.sample_dt_s},
+                     {"stop_after_mu_s", s.run.stop_after_mu_s},
+                     {"peak_drop", s.rules.peak_drop},
+                     {"mu_d_skip_t0", s.rules.mu_d_skip_t0},
+                     {"reps", s.reps},
+                     {"seed", s.seed}};
+}
+
+void apply_scene_json(Scene& s, const nlohmann::json& j) {
+  if (!j.is_object()) throw InputError("scene", "a scene file must hold one JSON object");
+  for (auto& [key, value] : j.items()) {
+    std::string text;
+    if (value.is_string()) text = value.get<std::string>();
+    else if (value.is_number_integer()) text = std::to_string(value.get<long long>());
+    else if (value.is_number()) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.17g", value.get<double>());
+      text = buf;
+    } else if (value.is_boolean()) text = value.get<bool>() ? "true" : "false";
+    else throw InputError(key, "must be a string, number or boolean");
+    set_scene_field(s, key, text);
+  }
+}
+
+}  // namespace sb

@@ -1,0 +1,83 @@
+#pragma once
+// A scene is one configured simulation: physics, surface, run control and the observables
+// wanted. It is built from options or a scene file and validated once; everything downstream
+// trusts it.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "springblock/model.hpp"
+#include "springblock/parameters.hpp"
+#include "springblock/surface.hpp"
+
+namespace sb {
+
+enum class Method { RK4, Event };
+std::string method_name(Method m);
+Method parse_method(const std::string& text);  // throws InputError("method")
+
+// How the macroscopic coefficients are read off mu(t). See paper/choices.md.
+struct ExtractionRules {
+  // First macroscopic slip: mu(t) falls this far (in units of mu) below its running maximum.
+  // mu_s is that running maximum. Precursor slips at groove edges drop mu by far less.
+  double peak_drop = 0.05;
+  // mu_d averages mu(t) from (first macroscopic slip + skip) to the end of the run,
+  // skip in units of the loading time t0 (see RunControl).
+  double mu_d_skip_t0 = 0.25;
+};
+
+struct RunControl {
+  Method method = Method::RK4;
+  double dt_s = 1e-7;        // RK4 step (the paper's 1e-4 ms)
+  double tol = 1e-9;         // event method: relative error tolerance
+  // Run length in units of t0 = (mu_s)_m F_n / (K_s v), the time the slider needs to load an
+  // average block to its threshold. Scaling with t0 keeps the number of stick-slip cycles the
+  // same when the contact fraction (hence F_n) changes. duration_s > 0 overrides.
+  double duration_t0 = 4.0;
+  double duration_s = 0.0;
+  double sample_dt_s = 1e-5;  // spacing of mu(t) samples
+  bool stop_after_mu_s = false;  // a scene that only needs mu_s stops at the first slip
+};
+
+struct Observables {
+  bool series = false;                 // keep mu(t), n_sliding(t) of repetition 0
+  std::vector<double> stress_times_s;  // per-block stress snapshots of repetition 0
+};
+
+struct Scene {
+  MaterialParameters material;
+  ChainGeometry geometry;
+  FrictionDistribution friction;
+  double k_int_scale = 1.0;  // multiplies K_int; 0 decouples the blocks
+  PatternSpec pattern;
+  RunControl run;
+  ExtractionRules rules;
+  Observables observe;
+  int reps = 20;
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0 = OpenMP default
+
+  DerivedParameters derived() const { return derive(material, geometry, k_int_scale); }
+  // Loading time t0 for this scene's contact fraction (see RunControl).
+  double t0_s() const;
+  double duration() const;  // seconds
+};
+
+// Throws InputError naming the field, the value and the allowed range.
+void validate(const Scene& s);
+
+// Build the chain of repetition `rep`: contact mask (random surfaces draw theirs from the
+// repetition's stream), micro coefficients drawn from the repetition's Gaussian stream.
+Chain build_chain(const Scene& s, int rep);
+
+// Seed of repetition `rep` from the scene seed: a SplitMix64 hash, so streams of different
+// repetitions are independent and do not depend on which thread runs them.
+std::uint64_t rep_seed(std::uint64_t seed, int rep);
+
+void to_json(nlohmann::json& j, const Scene& s);
+// Overlay the keys present in `j` onto `s` (scene files). Unknown keys are an InputError.
+void apply_scene_json(Scene& s, const nlohmann::json& j);
+
+}  // namespace sb

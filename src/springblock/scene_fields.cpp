@@ -1,0 +1,166 @@
+#include "springblock/scene_fields.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include "springblock/units.hpp"
+
+namespace sb {
+namespace {
+
+double number(const std::string& key, const std::string& text) {
+  return parse_quantity(text, Dimension::Dimensionless, key);
+}
+
+long long integer(const std::string& key, const std::string& text) {
+  long long x = 0;
+  const char* b = text.data();
+  const char* e = b + text.size();
+  auto [p, ec] = std::from_chars(b, e, x);
+  if (ec != std::errc() || p != e)
+    throw InputError(key, "'" + text + "' is not a whole number");
+  return x;
+}
+
+// "MEAN,SD" for a micro-coefficient distribution.
+std::pair<double, double> mean_sd(const std::string& key, const std::string& text) {
+  auto comma = text.find(',');
+  if (comma == std::string::npos)
+    throw InputError(key, "'" + text + "' must be MEAN,SD (e.g. 1.0,0.1)");
+  return {number(key, text.substr(0, comma)), number(key, text.substr(comma + 1))};
+}
+
+using Setter = std::function<void(Scene&, const std::string&, const std::string&)>;
+
+struct Entry {
+  SceneField field;
+  Setter set;
+};
+
+const std::vector<Entry>& entries() {
+  static const std::vector<Entry> table = {
+      {{"N", "number of blocks (default 200)", "360"},
+       [](Scene& s, auto& k, auto& v) {
+         auto n = integer(k, v);
+         if (n < 1 || n > 1000000) throw InputError(k, "N = " + v + " is outside [1, 1000000]");
+         s.geometry.N = static_cast<int>(n);
+       }},
+      {{"length", "total length L_x (default 4cm; m, cm, mm, um)", "7.2cm"},
+       [](Scene& s, auto& k, auto& v) { s.geometry.L_x_m = parse_quantity(v, Dimension::Length, k); }},
+      {{"pattern", "surface: smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION",
+        "periodic:2,1"},
+       [](Scene& s, auto&, auto& v) { s.pattern = parse_pattern(v); }},
+      {{"mu_s", "micro static coefficient MEAN,SD (default 1.0,0.1)", "1.0,0.1"},
+       [](Scene& s, auto& k, auto& v) {
+         std::tie(s.friction.mu_s_mean, s.friction.mu_s_sd) = mean_sd(k, v);
+       }},
+      {{"mu_d", "micro dynamic coefficient MEAN,SD (default 0.5,0.01)", "0.5,0.01"},
+       [](Scene& s, auto& k, auto& v) {
+         std::tie(s.friction.mu_d_mean, s.friction.mu_d_sd) = mean_sd(k, v);
+       }},
+      {{"pair_policy", "a draw with mu_d > mu_s: clip (mu_d := mu_s, default) or keep", "clip"},
+       [](Scene& s, auto& k, auto& v) {
+         if (v == "clip") s.friction.pair_policy = FrictionDistribution::PairPolicy::Clip;
+         else if (v == "keep") s.friction.pair_policy = FrictionDistribution::PairPolicy::Keep;
+         else throw InputError(k, "'" + v + "' is not one of: clip, keep");
+       }},
+      {{"k_int_scale", "multiplies K_int (default 1; 0 decouples the blocks)", "0"},
+       [](Scene& s, auto& k, auto& v) { s.k_int_scale = number(k, v); }},
+      {{"damping", "viscous damping gamma (default 10/ms; /s, /ms, Hz; 0 for none)", "10/ms"},
+       [](Scene& s, auto& k, auto& v) { s.material.gamma_per_s = parse_quantity(v, Dimension::Rate, k); }},
+      {{"velocity", "slider velocity v (default 0.05cm/s)", "0.05cm/s"},
+       [](Scene& s, auto& k, auto& v) { s.material.v_m_per_s = parse_quantity(v, Dimension::Velocity, k); }},
+      {{"pressure", "total load pressure P (default 1MPa)", "1MPa"},
+       [](Scene& s, auto& k, auto& v) { s.material.P_Pa = parse_quantity(v, Dimension::Pressure, k); }},
+      {{"shear_modulus", "G (default 5MPa)", "5MPa"},
+       [](Scene& s, auto& k, auto& v) { s.material.G_Pa = parse_quantity(v, Dimension::Pressure, k); }},
+      {{"young_modulus", "E (default 15MPa)", "15MPa"},
+       [](Scene& s, auto& k, auto& v) { s.material.E_Pa = parse_quantity(v, Dimension::Pressure, k); }},
+      {{"density", "rho (default 1.2g/cm3)", "1.2g/cm3"},
+       [](Scene& s, auto& k, auto& v) { s.material.rho_kg_per_m3 = parse_quantity(v, Dimension::Density, k); }},
+      {{"l_y", "transversal width l_y (default 1cm)", "1cm"},
+       [](Scene& s, auto& k, auto& v) { s.material.l_y_m = parse_quantity(v, Dimension::Length, k); }},
+      {{"l_z", "height l_z (default 0.1cm)", "0.1cm"},
+       [](Scene& s, auto& k, auto& v) { s.material.l_z_m = parse_quantity(v, Dimension::Length, k); }},
+      {{"reps", "repetitions with independent draws (default 20)", "20"},
+       [](Scene& s, auto& k, auto& v) {
+         auto n = integer(k, v);
+         if (n < 1 || n > 1000000) throw InputError(k, "reps = " + v + " is outside [1, 1000000]");
+         s.reps = static_cast<int>(n);
+       }},
+      {{"seed", "seed of repetition 0's stream (default 1); fixes the result at any thread count", "7"},
+       [](Scene& s, auto& k, auto& v) {
+         auto n = integer(k, v);
+         if (n < 0) throw InputError(k, "seed = " + v + " must be >= 0");
+         s.seed = static_cast<std::uint64_t>(n);
+       }},
+      {{"threads", "OpenMP threads over repetitions (default: all cores)", "2"},
+       [](Scene& s, auto& k, auto& v) {
+         auto n = integer(k, v);
+         if (n < 0 || n > 1024) throw InputError(k, "threads = " + v + " is outside [0, 1024]");
+         s.threads = static_cast<int>(n);
+       }},
+      {{"method", "integrator: rk4 (the paper's fixed step) or event (exact switching, adaptive)", "rk4"},
+       [](Scene& s, auto&, auto& v) { s.run.method = parse_method(v); }},
+      {{"dt", "RK4 step h (default 1e-4ms)", "1e-4ms"},
+       [](Scene& s, auto& k, auto& v) { s.run.dt_s = parse_quantity(v, Dimension::Time, k); }},
+      {{"tol", "event method relative tolerance (default 1e-9)", "1e-9"},
+       [](Scene& s, auto& k, auto& v) { s.run.tol = number(k, v); }},
+      {{"duration", "simulated time: a time (e.g. 1s) or a multiple of t0 (e.g. 4t0, the default)", "4t0"},
+       [](Scene& s, auto& k, auto& v) {
+         if (v.size() > 2 && v.substr(v.size() - 2) == "t0") {
+           s.run.duration_t0 = number(k, v.substr(0, v.size() - 2));
+           s.run.duration_s = 0;
+         } else {
+           s.run.duration_s = parse_quantity(v, Dimension::Time, k);
+           if (!(s.run.duration_s > 0)) throw InputError(k, "duration = " + v + " must be > 0");
+         }
+       }},
+      {{"sample_dt", "spacing of mu(t) samples (default 1e-2ms)", "1e-2ms"},
+       [](Scene& s, auto& k, auto& v) { s.run.sample_dt_s = parse_quantity(v, Dimension::Time, k); }},
+      {{"peak_drop", "first macroscopic slip: mu drops this far below its running max (default 0.05)", "0.05"},
+       [](Scene& s, auto& k, auto& v) { s.rules.peak_drop = number(k, v); }},
+      {{"mu_d_skip", "mu_d window starts this many t0 after the first slip (default 0.25)", "0.25"},
+       [](Scene& s, auto& k, auto& v) { s.rules.mu_d_skip_t0 = number(k, v); }},
+      {{"stop_after_mu_s", "stop each repetition at the first macroscopic slip (true/false)", "false"},
+       [](Scene& s, auto& k, auto& v) {
+         if (v == "true" || v == "1") s.run.stop_after_mu_s = true;
+         else if (v == "false" || v == "0") s.run.stop_after_mu_s = false;
+         else throw InputError(k, "'" + v + "' is not true or false");
+       }},
+      {{"stress_times", "comma-separated times for per-block stress snapshots (repetition 0)", "0.2s,0.3s"},
+       [](Scene& s, auto& k, auto& v) {
+         s.observe.stress_times_s.clear();
+         std::size_t start = 0;
+         while (start <= v.size()) {
+           auto comma = v.find(',', start);
+           auto piece = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+           s.observe.stress_times_s.push_back(parse_quantity(piece, Dimension::Time, k));
+           if (comma == std::string::npos) break;
+           start = comma + 1;
+         }
+       }},
+  };
+  return table;
+}
+
+}  // namespace
+
+const std::vector<SceneField>& scene_fields() {
+  static const std::vector<SceneField> fields = [] {
+    std::vector<SceneField> f;
+    for (auto& e : entries()) f.push_back(e.field);
+    return f;
+  }();
+  return fields;
+}
+
+void set_scene_field(Scene& s, const std::string& key, const std::string& value) {
+  for (auto& e : entries())
+    if (e.field.key == key) return e.set(s, key, value);
+  throw InputError(key, "unknown scene field");
+}
+
+}  // namespace sb

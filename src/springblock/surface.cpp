@@ -1,0 +1,256 @@
+#include "springblock/surface.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+#include <system_error>
+
+#include "springblock/units.hpp"  // InputError
+
+namespace sb {
+namespace {
+
+constexpr const char* kGrammar =
+    "expected smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION";
+// Sizes are block counts; anything beyond this is certainly a typo and would only produce a
+// confusing "exceeds N" later, or overflow in period arithmetic.
+constexpr int kMaxSize = 1'000'000;
+// Deeper hierarchies than this have no counterpart in the paper (which stops at 3) and would
+// need blocks far smaller than any sensible discretisation.
+constexpr std::size_t kMaxLevels = 8;
+
+[[noreturn]] void fail(const std::string& what) {
+  throw InputError("pattern", what + "; " + kGrammar);
+}
+
+// For errors where the spec is well formed but unusable with this chain; repeating the
+// grammar there would suggest a syntax problem that does not exist.
+[[noreturn]] void fail_plain(const std::string& what) { throw InputError("pattern", what); }
+
+std::vector<std::string_view> split(std::string_view s, char sep) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto pos = s.find(sep, start);
+    if (pos == std::string_view::npos) {
+      out.push_back(s.substr(start));
+      return out;
+    }
+    out.push_back(s.substr(start, pos - start));
+    start = pos + 1;
+  }
+}
+
+int parse_size(std::string_view tok, const std::string& spec) {
+  const std::string quoted = "'" + std::string(tok) + "' in '" + spec + "'";
+  if (tok.empty()) fail("missing number in '" + spec + "'");
+  // from_chars on an int stops at '.', so "2.5" is caught as trailing text below, giving a
+  // clear "not an integer" instead of silently truncating to 2.
+  long long v = 0;
+  const auto [ptr, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+  if (ec == std::errc::result_out_of_range) fail("size " + quoted + " is too large (max 1000000)");
+  if (ec != std::errc() || ptr != tok.data() + tok.size())
+    fail("size " + quoted + " is not an integer");
+  if (v <= 0) fail("size " + quoted + " must be a positive number of blocks");
+  if (v > kMaxSize) fail("size " + quoted + " is too large (max 1000000)");
+  return static_cast<int>(v);
+}
+
+// Portable uniform integer in [0, bound). std::uniform_int_distribution is allowed to differ
+// between standard libraries, which would make a random surface depend on the toolchain; the
+// mt19937_64 bit stream itself is fully specified, so we only need a specified reduction.
+// Rejection of the lowest (2^64 mod bound) values removes the modulo bias exactly.
+std::uint64_t bounded_draw(std::mt19937_64& rng, std::uint64_t bound) {
+  const std::uint64_t threshold = (0 - bound) % bound;  // == 2^64 mod bound
+  while (true) {
+    const std::uint64_t x = rng();
+    if (x >= threshold) return x % bound;
+  }
+}
+
+// Marks blocks [begin, end) as alternating runs of `size` pawl / `size` groove, pawl first.
+// Used both for level 1 (over the whole surface) and for every later level (over each
+// surviving pawl run), which is what makes the pattern self-similar.
+void alternate(std::vector<std::uint8_t>& mask, int begin, int end, int pawl, int groove) {
+  const int period = pawl + groove;
+  for (int i = begin; i < end; ++i) mask[i] = ((i - begin) % period) < pawl ? 1 : 0;
+}
+
+void validate(const PatternSpec& spec) {
+  // build_contact_mask is also callable with a hand-made spec, so re-check what parse_pattern
+  // guarantees: a zero size would make the period arithmetic divide by zero.
+  switch (spec.kind) {
+    case SurfaceKind::Smooth: return;
+    case SurfaceKind::Periodic:
+      if (spec.n_p < 1 || spec.n_g < 1 || spec.n_p > kMaxSize || spec.n_g > kMaxSize)
+        fail("periodic sizes must be positive integers up to 1000000, got '" + spec.text() + "'");
+      return;
+    case SurfaceKind::Hierarchical:
+      if (spec.levels.empty() || spec.levels.size() > kMaxLevels)
+        fail("hierarchical needs 1 to 8 levels, got '" + spec.text() + "'");
+      for (int g : spec.levels)
+        if (g < 1 || g > kMaxSize)
+          fail("hierarchical sizes must be positive integers up to 1000000, got '" + spec.text() +
+               "'");
+      return;
+    case SurfaceKind::Random:
+      if (!(spec.groove_fraction >= 0.0 && spec.groove_fraction < 1.0))
+        fail("random groove fraction must be in [0,1), got '" + spec.text() + "'");
+      return;
+  }
+  fail("unknown surface kind");
+}
+
+}  // namespace
+
+std::string PatternSpec::text() const {
+  switch (kind) {
+    case SurfaceKind::Smooth: return "smooth";
+    case SurfaceKind::Periodic:
+      return "periodic:" + std::to_string(n_p) + "," + std::to_string(n_g);
+    case SurfaceKind::Hierarchical: {
+      std::string s = "hierarchical:";
+      for (std::size_t i = 0; i < levels.size(); ++i) {
+        if (i) s += ',';
+        s += std::to_string(levels[i]);
+      }
+      return s;
+    }
+    case SurfaceKind::Random: {
+      // Shortest round-trip form, so parse_pattern(spec.text()) reproduces the same double and
+      // therefore the same groove count; std::to_string would round to 6 decimals.
+      std::array<char, 64> buf{};
+      const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), groove_fraction);
+      return "random:" + std::string(buf.data(), res.ptr);
+    }
+  }
+  return "?";
+}
+
+PatternSpec parse_pattern(const std::string& spec) {
+  const std::string_view s = spec;
+  const auto colon = s.find(':');
+  const std::string_view kind = s.substr(0, colon);
+  const std::string_view args =
+      colon == std::string_view::npos ? std::string_view{} : s.substr(colon + 1);
+  const bool has_args = colon != std::string_view::npos;
+
+  PatternSpec out;
+  if (kind == "smooth") {
+    if (has_args) fail("'smooth' takes no numbers, got '" + spec + "'");
+    out.kind = SurfaceKind::Smooth;
+    return out;
+  }
+  if (kind == "periodic") {
+    if (!has_args) fail("'periodic' needs two numbers NP,NG, got '" + spec + "'");
+    const auto toks = split(args, ',');
+    if (toks.size() != 2)
+      fail("'periodic' needs exactly two numbers NP,NG, got " + std::to_string(toks.size()) +
+           " in '" + spec + "'");
+    out.kind = SurfaceKind::Periodic;
+    out.n_p = parse_size(toks[0], spec);
+    out.n_g = parse_size(toks[1], spec);
+    return out;
+  }
+  if (kind == "hierarchical") {
+    if (!has_args) fail("'hierarchical' needs at least one groove size, got '" + spec + "'");
+    const auto toks = split(args, ',');
+    if (toks.size() > kMaxLevels)
+      fail("'hierarchical' allows at most 8 levels, got " + std::to_string(toks.size()) +
+           " in '" + spec + "'");
+    out.kind = SurfaceKind::Hierarchical;
+    // Non-decreasing levels are deliberately accepted: they are well defined (a level larger
+    // than the pawl runs it subdivides leaves them untouched) and rejecting them would forbid
+    // legitimate parameter sweeps that cross over.
+    for (auto t : toks) out.levels.push_back(parse_size(t, spec));
+    return out;
+  }
+  if (kind == "random") {
+    if (!has_args || args.empty()) fail("'random' needs a groove fraction, got '" + spec + "'");
+    if (args.find(',') != std::string_view::npos)
+      fail("'random' takes exactly one number, got '" + spec + "'");
+    double f = 0.0;
+    const auto [ptr, ec] = std::from_chars(args.data(), args.data() + args.size(), f);
+    if (ec != std::errc() || ptr != args.data() + args.size())
+      fail("groove fraction '" + std::string(args) + "' in '" + spec + "' is not a number");
+    // Written as a negated range test so NaN (which from_chars accepts) is rejected too.
+    if (!(f >= 0.0 && f < 1.0))
+      fail("groove fraction '" + std::string(args) + "' in '" + spec + "' must be in [0,1)");
+    out.kind = SurfaceKind::Random;
+    out.groove_fraction = f;
+    return out;
+  }
+  fail("unknown pattern kind '" + std::string(kind) + "' in '" + spec + "'");
+}
+
+std::vector<std::uint8_t> build_contact_mask(const PatternSpec& spec, int N, std::uint64_t seed) {
+  if (N < 1) fail_plain("the chain needs at least one block, got N=" + std::to_string(N));
+  validate(spec);
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(N), 1);
+  const auto too_big = [&](int size) {
+    fail_plain("size " + std::to_string(size) + " in '" + spec.text() +
+               "' exceeds the number of blocks N=" + std::to_string(N));
+  };
+
+  switch (spec.kind) {
+    case SurfaceKind::Smooth: break;
+    case SurfaceKind::Periodic:
+      if (spec.n_p > N) too_big(spec.n_p);
+      if (spec.n_g > N) too_big(spec.n_g);
+      alternate(mask, 0, N, spec.n_p, spec.n_g);
+      break;
+    case SurfaceKind::Hierarchical: {
+      for (int g : spec.levels)
+        if (g > N) too_big(g);
+      alternate(mask, 0, N, spec.levels[0], spec.levels[0]);
+      for (std::size_t k = 1; k < spec.levels.size(); ++k) {
+        const int g = spec.levels[k];
+        // Find each maximal pawl run left by the previous levels and subdivide it in place.
+        // Grooves are never touched again: a finer level only removes contact, never adds it.
+        int i = 0;
+        while (i < N) {
+          if (!mask[i]) {
+            ++i;
+            continue;
+          }
+          int j = i;
+          while (j < N && mask[j]) ++j;
+          alternate(mask, i, j, g, g);
+          i = j;
+        }
+      }
+      break;
+    }
+    case SurfaceKind::Random: {
+      // std::llround rounds halves away from zero, independent of the FP rounding mode.
+      const long long grooves = std::llround(spec.groove_fraction * static_cast<double>(N));
+      std::vector<int> idx(static_cast<std::size_t>(N));
+      for (int i = 0; i < N; ++i) idx[i] = i;
+      std::mt19937_64 rng(seed);
+      // Partial Fisher-Yates: after step i the prefix idx[0..i] is a uniform sample without
+      // replacement, so only `grooves` draws are needed.
+      for (long long i = 0; i < grooves && i < N; ++i) {
+        const auto j = i + static_cast<long long>(
+                               bounded_draw(rng, static_cast<std::uint64_t>(N - i)));
+        std::swap(idx[i], idx[j]);
+        mask[idx[i]] = 0;
+      }
+      break;
+    }
+  }
+
+  bool any = false;
+  for (auto m : mask) any = any || m;
+  if (!any) fail_plain("no block is left in contact; the surface cannot carry the load");
+  return mask;
+}
+
+double contact_fraction(const std::vector<std::uint8_t>& mask) {
+  if (mask.empty()) return 0.0;
+  std::size_t c = 0;
+  for (auto m : mask) c += m ? 1 : 0;
+  return static_cast<double>(c) / static_cast<double>(mask.size());
+}
+
+}  // namespace sb
