@@ -157,6 +157,11 @@ int main(int argc, char** argv) {
   run->add_option("--out", out_path, "write the full JSON results to this file (atomically)");
   run->add_option("--series", series_path, "write mu(t) and the sliding count of repetition 0 as TSV");
   run->add_flag("--progress", progress, "show progress and ETA on stderr even when it is not a terminal");
+  int pattern_N = 120;
+  std::string pattern_spec = "smooth";
+  auto* pattern_cmd = app.add_subcommand("pattern", "print a surface's contact mask (1 = pawl, 0 = groove) and S/S_tot");
+  pattern_cmd->add_option("--N", pattern_N, "number of blocks")->check(CLI::Range(1, 1000000));
+  pattern_cmd->add_option("--pattern", pattern_spec, "smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION");
   bool theory_json = false;
   auto* theory = app.add_subcommand("theory", "closed-form single-block predictions (K_int = 0 limit)");
   theory_fields.add_to(theory);
@@ -175,6 +180,12 @@ int main(int argc, char** argv) {
   try {
     if (run->parsed())
       return cmd_run(run_fields, run, scene_file, json, out_path, series_path, progress, join_args(argc, argv));
+    if (pattern_cmd->parsed()) {
+      auto mask = sb::build_contact_mask(sb::parse_pattern(pattern_spec), pattern_N, 1);
+      for (auto m : mask) std::putchar(m ? '1' : '0');
+      std::printf("\n%.17g\n", sb::contact_fraction(mask));
+      return 0;
+    }
     return cmd_theory(theory_fields, theory, theory_json);
   } catch (const sb::InputError& e) {
     std::fprintf(stderr, "springblock: invalid %s: %s\n", e.field.c_str(), e.what());

@@ -1,3 +1,4 @@
+#include "springblock/integrate/event_driven.hpp"
 #include "springblock/integrate/integrator.hpp"
 #include "springblock/integrate/rk4.hpp"
 #include "springblock/units.hpp"
@@ -9,9 +10,9 @@ std::unique_ptr<Integrator> make_integrator(const RunControl& rc) {
     case Method::RK4:
       return std::make_unique<Rk4>(rc.dt_s);
     case Method::Event:
-      break;
+      return std::make_unique<EventDriven>(rc.tol);
   }
-  throw InputError("method", "the event-driven integrator is not available in this build");
+  throw InputError("method", "unknown integration method");
 }
 
 }  // namespace sb

@@ -43,38 +43,41 @@ void acceleration(const Chain& c, const double* __restrict u, const double* __re
   a[N - 1] = mobile[N - 1] * inv_m * (base(N - 1) + (Coupled ? Ki * (u[N - 2] - u[N - 1]) : 0.0));
 }
 
+// One intermediate RK4 stage: accumulate the stage slopes (weight 2) and form the next stage
+// input y + c h k. A separate function with restrict-qualified parameters lets GCC vectorise
+// it (the same loops inlined with restrict locals did not: measured 15-20% on the step).
+inline void rk4_stage(int N, const double* __restrict u, const double* __restrict v,
+                      const double* __restrict a, double ch, double* __restrict us,
+                      double* __restrict vs, double* __restrict su, double* __restrict sv) {
+  for (int i = 0; i < N; ++i) {
+    su[i] += 2.0 * vs[i];
+    sv[i] += 2.0 * a[i];
+    us[i] = u[i] + ch * vs[i];
+    vs[i] = v[i] + ch * a[i];
+  }
+}
+
 template <bool Coupled, bool Damped>
 void rk4_step(const Chain& c, State& s, Workspace& w, double t, double h) {
   const int N = c.N;
-  double* __restrict u = s.u.data();
-  double* __restrict v = s.v.data();
-  double* __restrict a = w.a.data();
-  double* __restrict us = w.us.data();
-  double* __restrict vs = w.vs.data();
-  double* __restrict su = w.su.data();
-  double* __restrict sv = w.sv.data();
+  double* u = s.u.data();
+  double* v = s.v.data();
+  double* a = w.a.data();
+  double* us = w.us.data();
+  double* vs = w.vs.data();
+  double* su = w.su.data();
+  double* sv = w.sv.data();
   const double h2 = 0.5 * h, h6 = h / 6.0;
   acceleration<Coupled, Damped>(c, u, v, t, w.mobile.data(), w.f_kin.data(), a);
-  for (int i = 0; i < N; ++i) {
-    su[i] = v[i];
-    sv[i] = a[i];
-    us[i] = u[i] + h2 * v[i];
-    vs[i] = v[i] + h2 * a[i];
-  }
+  // Stage 1 starts the accumulators: su = k1_u = v, sv = k1_v = a.
+  std::copy(v, v + N, su);
+  std::copy(a, a + N, sv);
+  for (int i = 0; i < N; ++i) us[i] = u[i] + h2 * v[i];
+  for (int i = 0; i < N; ++i) vs[i] = v[i] + h2 * a[i];
   acceleration<Coupled, Damped>(c, us, vs, t + h2, w.mobile.data(), w.f_kin.data(), a);
-  for (int i = 0; i < N; ++i) {
-    su[i] += 2.0 * vs[i];
-    sv[i] += 2.0 * a[i];
-    us[i] = u[i] + h2 * vs[i];
-    vs[i] = v[i] + h2 * a[i];
-  }
+  rk4_stage(N, u, v, a, h2, us, vs, su, sv);
   acceleration<Coupled, Damped>(c, us, vs, t + h2, w.mobile.data(), w.f_kin.data(), a);
-  for (int i = 0; i < N; ++i) {
-    su[i] += 2.0 * vs[i];
-    sv[i] += 2.0 * a[i];
-    us[i] = u[i] + h * vs[i];
-    vs[i] = v[i] + h * a[i];
-  }
+  rk4_stage(N, u, v, a, h, us, vs, su, sv);
   acceleration<Coupled, Damped>(c, us, vs, t + h, w.mobile.data(), w.f_kin.data(), a);
   for (int i = 0; i < N; ++i) {
     u[i] += h6 * (su[i] + vs[i]);

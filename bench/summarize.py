@@ -1,0 +1,59 @@
+#!/usr/bin/python3
+"""Print the benchmark table from Google Benchmark JSON files (bench-report runs this).
+
+Kernel cases: ns per block per step (median over repetitions) and the speed-ups of sb::Rk4
+over the naive reference and of each effect specialisation over the full kernel. Ratios come
+from one run with interleaved repetitions, so machine load affects both sides alike.
+"""
+import json
+import statistics
+import sys
+from collections import defaultdict
+
+
+def medians(path):
+    """run_name -> {counter: median over repetitions} (falls back to single iterations)."""
+    with open(path) as f:
+        rows = json.load(f)["benchmarks"]
+    runs = defaultdict(lambda: defaultdict(list))
+    for r in rows:
+        if r.get("run_type") == "aggregate" or r.get("error_occurred"):
+            continue
+        for key, value in r.items():
+            if isinstance(value, (int, float)) and not isinstance(value, bool):
+                runs[r["run_name"]][key].append(value)
+    return {name: {k: statistics.median(v) for k, v in c.items()} for name, c in runs.items()}
+
+
+def kernel_table(path):
+    runs = medians(path)
+    cases = defaultdict(dict)  # (pattern, N) -> variant -> ns/block/step
+    for name, c in runs.items():
+        _, impl, effects, pattern, n = name.split("/")
+        cases[(pattern, n)][f"{impl}/{effects}"] = c["s_per_block_step"] * 1e9
+    variants = ["fast/full", "fast/kint0", "fast/gamma0", "fast/kint0_gamma0", "naive/full"]
+    print("RK4 kernel, ns per block per step (median)")
+    print(f"{'surface':22s}{'N':>6s}" + "".join(f"{v:>19s}" for v in variants))
+    for (pattern, n), row in sorted(cases.items()):
+        print(f"{pattern:22s}{n[2:]:>6s}" + "".join(f"{row.get(v, float('nan')):19.2f}" for v in variants))
+    print("\nSpeed-ups (x, higher is faster)")
+    heads = ["naive/fast", "full/kint0", "full/gamma0", "full/both0"]
+    print(f"{'surface':22s}{'N':>6s}" + "".join(f"{h:>13s}" for h in heads))
+    for (pattern, n), row in sorted(cases.items()):
+        full = row.get("fast/full", float("nan"))
+        ratios = [row.get("naive/full", float("nan")) / full] + [
+            full / row.get(v, float("nan")) for v in variants[1:4]]
+        print(f"{pattern:22s}{n[2:]:>6s}" + "".join(f"{x:13.2f}" for x in ratios))
+
+
+def ensemble_table(path):
+    print("\nWhole repetition (median)")
+    for name, c in sorted(medians(path).items()):
+        print(f"{name}: {c['real_time']:.0f} {'ms'} wall, {c['steps_taken']:.0f} steps taken of "
+              f"{c['steps_spanned']:.0f} spanned: the quiet jump saves x{c['jump_ratio']:.1f} steps")
+
+
+if __name__ == "__main__":
+    kernel_table(sys.argv[1])
+    if len(sys.argv) > 2:
+        ensemble_table(sys.argv[2])

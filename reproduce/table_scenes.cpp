@@ -1,0 +1,29 @@
+#include "table_scenes.hpp"
+
+#include <fmt/format.h>
+
+#include "springblock/units.hpp"
+
+namespace repro {
+
+std::vector<LabelledScene> table_scenes(const Context& ctx) {
+  if (ctx.opt.table.empty()) throw sb::InputError("table", "this target needs --table published_tab_patN.tsv");
+  std::vector<LabelledScene> out;
+  for (const auto& row : read_table(ctx.opt.table)) {
+    LabelledScene s;
+    s.id = row.row_id;
+    s.label = row.pattern;
+    s.scene = ctx.chain(row.N, fmt::format("{:g}cm", row.L_x_cm), row.pattern);
+    s.x = {{"row_id", row.row_id},
+           {"pattern", row.pattern},
+           {"N", row.N},
+           {"L_x_cm", row.L_x_cm},
+           {"S_printed", row.S_num / row.S_den},
+           {"S_printed_text", fmt::format("{:g}/{:g}", row.S_num, row.S_den)},
+           {"published", {{"mu_s", row.mu_s}, {"mu_s_err", row.mu_s_err}, {"mu_d", row.mu_d}, {"mu_d_err", row.mu_d_err}}}};
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace repro

@@ -1,0 +1,12 @@
+#pragma once
+// Scenes for the published tables: one scene per TSV row, keyed by row_id, built from the row's
+// own N, L_x and pattern. The rows are read at run time so the TSV is the single source.
+#include <vector>
+
+#include "common.hpp"
+
+namespace repro {
+
+std::vector<LabelledScene> table_scenes(const Context& ctx);
+
+}  // namespace repro

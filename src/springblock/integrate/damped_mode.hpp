@@ -1,0 +1,43 @@
+#pragma once
+// Exact solution of one normal mode q'' + gamma q' + omega^2 q = 0 from q(0) = q0, q'(0) = p0:
+//   q(tau) = e^{-alpha tau} [q0 C(tau) + (p0 + alpha q0) S(tau)],  alpha = gamma / 2,
+// with C, S the cos / sin-over-frequency pair of s = omega^2 - alpha^2 (cosh / sinh when the mode
+// is overdamped, s < 0; 1 and tau at critical damping). One formula covers gamma = 0,
+// underdamped, critical and overdamped modes without dividing by a vanishing frequency.
+#include <cmath>
+
+namespace sb::event_detail {
+
+struct DampedMode {
+  double alpha = 0;   // gamma / 2 [1/s]
+  double omega2 = 0;  // omega^2 [1/s^2]
+
+  // q and q' at tau >= 0.
+  void eval(double q0, double p0, double tau, double& q, double& qd) const {
+    const double s = omega2 - alpha * alpha;
+    const double x = s * tau * tau;
+    double eC, eS;  // e^{-alpha tau} C, e^{-alpha tau} S
+    if (std::fabs(x) < 1e-5) {
+      // Series: avoids sin(w tau)/w with w -> 0 (near-critical modes, tau -> 0).
+      const double e = std::exp(-alpha * tau);
+      eC = e * (1.0 - x / 2.0 + x * x / 24.0);
+      eS = e * tau * (1.0 - x / 6.0 + x * x / 120.0);
+    } else if (s > 0) {
+      const double w = std::sqrt(s), e = std::exp(-alpha * tau);
+      eC = e * std::cos(w * tau);
+      eS = e * std::sin(w * tau) / w;
+    } else {
+      // Overdamped: the two real exponentials taken separately so that neither overflows;
+      // the slow rate kappa - alpha is written as -omega^2 / (alpha + kappa) (no cancellation).
+      const double k = std::sqrt(-s);
+      const double slow = std::exp(-omega2 / (alpha + k) * tau), fast = std::exp(-(alpha + k) * tau);
+      eC = 0.5 * (slow + fast);
+      eS = 0.5 * (slow - fast) / k;
+    }
+    const double P = p0 + alpha * q0;
+    q = q0 * eC + P * eS;
+    qd = -alpha * q + (P * eC - s * q0 * eS);
+  }
+};
+
+}  // namespace sb::event_detail

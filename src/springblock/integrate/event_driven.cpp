@@ -1,0 +1,145 @@
+#include "springblock/integrate/event_driven.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "springblock/integrate/dopri5.hpp"
+#include "springblock/integrate/event_search.hpp"
+#include "springblock/integrate/quiet_phase.hpp"
+#include "springblock/integrate/switching.hpp"
+
+namespace sb {
+namespace {
+
+using event_detail::Dopri5;
+using event_detail::EventSearch;
+using event_detail::QuietPhase;
+using event_detail::Switching;
+
+// Sample times are k * sample_dt from an integer k, so long runs do not accumulate rounding.
+struct SampleClock {
+  double dt;
+  long long k;
+  double next() const { return static_cast<double>(k) * dt; }
+};
+
+template <bool Coupled, bool Damped>
+void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, double tol,
+              bool fast_forward, std::vector<double>* log_) {
+  const int N = c.N;
+  // Error scales: the spring stretch at the threshold, F_n / K_s, and the velocity of an
+  // oscillation of that amplitude at the slider frequency.
+  const double len = c.F_n / c.K_s, omega_s = std::sqrt(c.K_s / c.m);
+  const double atol_u = tol * len, atol_v = tol * omega_s * len, rtol = tol;
+  const double omega_max = std::sqrt((c.K_s + 4.0 * c.K_int) / c.m);
+  double h = 0.5 * std::pow(tol, 0.2) / omega_max;
+
+  // All workspaces allocated once per run.
+  Dopri5 dp(N);
+  EventSearch search(N);
+  Switching sw(N);
+  std::unique_ptr<QuietPhase> quiet;
+  if (fast_forward) quiet = std::make_unique<QuietPhase>(c);
+  State sample = s;  // buffer for samples served from the exact quiet-phase solution
+
+  sw.sync(c, s);
+  sw.settle(c, s);
+  obs.sample(c, s);
+  SampleClock clock{sample_dt, static_cast<long long>(std::floor(s.t / sample_dt)) + 1};
+  bool stage1_valid = false;
+
+  auto sample_if_due = [&] {
+    if (s.t == clock.next()) {
+      obs.sample(c, s);
+      ++clock.k;
+    }
+  };
+
+  while (s.t < t_end && !obs.wants_stop()) {
+    if (fast_forward && sw.n_sliding() == 0) {
+      // Quiet phase: exact until the first threshold crossing (or the end of the run).
+      quiet->begin(c, s.t, s.u.data(), s.v.data());
+      const auto next = quiet->next_threshold(c, t_end);
+      while (clock.next() < next.t) {
+        sample.t = clock.next();
+        std::copy(s.u.begin(), s.u.end(), sample.u.begin());
+        std::copy(s.v.begin(), s.v.end(), sample.v.begin());
+        std::copy(s.dir.begin(), s.dir.end(), sample.dir.begin());
+        quiet->evaluate(sample.t, sample.u.data(), sample.v.data());
+        sample.steps = s.steps, sample.rhs_evals = s.rhs_evals, sample.switches = s.switches;
+        obs.sample(c, sample);
+        ++clock.k;
+        if (obs.wants_stop()) {
+          quiet->evaluate(sample.t, s.u.data(), s.v.data());
+          s.t = sample.t;
+          return;
+        }
+      }
+      quiet->evaluate(next.t, s.u.data(), s.v.data());
+      s.t = next.t;
+      if (next.block >= 0) sw.flag(next.block);
+      if (sw.settle(c, s) > 0 && log_) log_->push_back(s.t);
+      stage1_valid = false;
+      sample_if_due();
+      continue;
+    }
+
+    if (!stage1_valid) {
+      dp.first_stage<Coupled, Damped>(c, s.u.data(), s.v.data(), s.t, sw.mobile(), sw.f_kin());
+      ++s.rhs_evals;
+      stage1_valid = true;
+    }
+    // Shorten the step to land exactly on the next sample (or the end of the run).
+    const double t_stop = std::min(clock.next(), t_end);
+    const bool clipped = s.t + h >= t_stop;
+    const double h_try = clipped ? t_stop - s.t : h;
+    const double err = dp.attempt<Coupled, Damped>(c, s.u.data(), s.v.data(), s.t, h_try, sw.mobile(),
+                                                   sw.f_kin(), atol_u, atol_v, rtol);
+    s.rhs_evals += 6;
+    // Standard step-size control of a 5th-order method, factor limited to [0.2, 5].
+    const double factor = err == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(err, -0.2), 0.2, 5.0);
+    if (!(err <= 1.0)) {
+      h = h_try * std::min(factor, 1.0);
+      continue;
+    }
+    const double theta = search.locate(c, s, dp, h_try, sw.mobile());
+    if (theta <= 1.0) {
+      // Redo the step to exactly the earliest event time, switch there, restart.
+      const double h_event = theta * h_try;
+      if (h_event > 0.0) {
+        dp.attempt<Coupled, Damped>(c, s.u.data(), s.v.data(), s.t, h_event, sw.mobile(), sw.f_kin(),
+                                    atol_u, atol_v, rtol);
+        s.rhs_evals += 6;
+        std::copy(dp.u1(), dp.u1() + N, s.u.begin());
+        std::copy(dp.v1(), dp.v1() + N, s.v.begin());
+        s.t = (theta == 1.0 && clipped) ? t_stop : s.t + h_event;
+        ++s.steps;
+      }
+      for (int i : search.hits()) sw.flag(i);
+      if (sw.settle(c, s) > 0 && log_) log_->push_back(s.t);
+      stage1_valid = false;
+      sample_if_due();
+      continue;
+    }
+    std::copy(dp.u1(), dp.u1() + N, s.u.begin());
+    std::copy(dp.v1(), dp.v1() + N, s.v.begin());
+    dp.accept_fsal();
+    s.t = clipped ? t_stop : s.t + h_try;
+    ++s.steps;
+    h = clipped ? std::max(h, h_try * factor) : h_try * factor;
+    sample_if_due();
+  }
+}
+
+}  // namespace
+
+void EventDriven::run(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs) {
+  const auto e = c.effects();
+  if (e.coupled && e.damped) run_loop<true, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, switch_log_);
+  else if (e.coupled) run_loop<true, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, switch_log_);
+  else if (e.damped) run_loop<false, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, switch_log_);
+  else run_loop<false, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, switch_log_);
+}
+
+}  // namespace sb

@@ -1,0 +1,44 @@
+#include "springblock/integrate/event_search.hpp"
+
+#include <cmath>
+
+namespace sb::event_detail {
+
+double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, double h, const double* mobile,
+                           double window) {
+  const int N = c.N;
+  const double t = s.t;
+  auto g = [&](int i, double th) {
+    if (s.dir[i] != 0) return s.dir[i] * dp.dense_v(i, th);
+    // Stuck: v_i = 0 (no damping force) and u_i does not move.
+    double F = c.K_s * (c.v_slider * (t + th * h) - s.u[i]);
+    if (i > 0) F += c.K_int * (dp.dense_u(i - 1, th) - s.u[i]);
+    if (i + 1 < N) F += c.K_int * (dp.dense_u(i + 1, th) - s.u[i]);
+    return c.f_static[i] - std::fabs(F);
+  };
+  double best = 2.0;
+  for (int i = 0; i < N; ++i) {
+    theta_[i] = 2.0;
+    if (!c.contact[i]) continue;
+    const bool smooth_only = s.dir[i] == 0 && (i == 0 || mobile[i - 1] == 0.0) &&
+                             (i + 1 == N || mobile[i + 1] == 0.0);
+    double lo = 0, hi = 2.0;
+    if (!smooth_only && g(i, 0.5) <= 0) hi = 0.5;
+    else if (g(i, 1.0) <= 0) lo = smooth_only ? 0.0 : 0.5, hi = 1.0;
+    if (hi > 1.0) continue;
+    // Bisection keeps g(lo) > 0 (or lo = 0, where the block has just switched), g(hi) <= 0.
+    for (int it = 0; it < 100 && (hi - lo) * h > 4e-16 * std::fabs(t + hi * h); ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (g(i, mid) > 0 ? lo : hi) = mid;
+    }
+    theta_[i] = hi;
+    if (hi < best) best = hi;
+  }
+  hits_.clear();
+  if (best <= 1.0)
+    for (int i = 0; i < N; ++i)
+      if (theta_[i] <= best + window) hits_.push_back(i);
+  return best;
+}
+
+}  // namespace sb::event_detail

@@ -1,0 +1,33 @@
+#pragma once
+// Locates stick/slip events inside a trial Dormand-Prince step from its continuous extension.
+//
+// Event functions, positive while nothing happens:
+//   sliding block:  g = dir * v           (stops when the velocity reaches zero)
+//   stuck block:    g = f_static - |F|    (starts to slide when the force reaches the threshold)
+// Each is sampled at the middle and the end of the step (the middle only where something can
+// move: a sliding block, or a stuck block with a moving neighbour; otherwise g is affine in t);
+// the first sign change is refined by bisection to round-off in t.
+#include <vector>
+
+#include "springblock/integrate/dopri5.hpp"
+#include "springblock/model.hpp"
+#include "springblock/state.hpp"
+
+namespace sb::event_detail {
+
+class EventSearch {
+ public:
+  explicit EventSearch(int N) : theta_(N) { hits_.reserve(N); }
+
+  // Earliest event fraction theta in [0, 1] of the step [s.t, s.t + h], or a value > 1 if none.
+  // hits() then lists the blocks whose events lie within `window` (fraction) of it, in order.
+  double locate(const Chain& c, const State& s, const Dopri5& dp, double h, const double* mobile,
+                double window = 1e-12);
+  const std::vector<int>& hits() const { return hits_; }
+
+ private:
+  std::vector<double> theta_;
+  std::vector<int> hits_;
+};
+
+}  // namespace sb::event_detail

@@ -1,0 +1,87 @@
+#pragma once
+// Exact propagation of the chain while every contact block is stuck (nothing slides).
+//
+// Stuck blocks do not move. Each maximal run of groove blocks (a segment) between stuck blocks
+// or a chain end is then an independent linear system
+//   m u'' + m gamma u' + K_seg u = K_s v t 1 + b,
+// K_seg = K_s I + K_int (path Laplacian; +1 on an end's diagonal where a stuck block holds it,
+// nothing at a free chain end), b = K_int x (the stuck neighbours' positions). Around the affine
+// particular solution u_p = A + B t (K_seg B = K_s v 1, K_seg A = b - m gamma B) the modes of
+// K_seg are damped oscillators solved in closed form (damped_mode.hpp).
+//
+// K_seg depends only on (length, left kind, right kind), so its eigendecomposition is computed
+// once per distinct key and shared by all grooves of a periodic pattern. Since the contact
+// mask is fixed, the segments are found once per run; a quiet phase only recomputes A, B and the
+// modal initial conditions.
+//
+// The next event is the first time a stuck block's driving force reaches +-f_static. A block
+// with stuck neighbours only has an affine force (closed form). A block next to a segment has an
+// affine force plus damped modes; its first crossing is found by a march whose steps cannot
+// skip a root (gap / bound on |dF/dt|, the bound from each mode's energy, which never grows),
+// then refined by bisection. Once the modes are below round-off the force is affine again.
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "springblock/integrate/damped_mode.hpp"
+#include "springblock/model.hpp"
+
+namespace sb::event_detail {
+
+class QuietPhase {
+ public:
+  explicit QuietPhase(const Chain& c);
+
+  // Start a quiet phase at time t0 from positions u and velocities v (every contact block
+  // stuck, so its v is 0).
+  void begin(const Chain& c, double t0, const double* u, const double* v);
+
+  // Exact u, v of every groove block at time t >= t0 (other entries untouched).
+  void evaluate(double t, double* u, double* v) const;
+
+  struct Next {
+    double t;   // event time, or t_limit when no stuck block reaches its threshold before it
+    int block;  // the block that reaches its threshold first, -1 if none
+  };
+  // The first threshold crossing in (t0, t_limit].
+  Next next_threshold(const Chain& c, double t_limit);
+
+  int distinct_decompositions() const { return static_cast<int>(decomps_.size()); }
+
+ private:
+  struct Decomp {
+    Eigen::MatrixXd Q;  // columns: orthonormal modes of K_seg
+    Eigen::VectorXd lambda;
+    std::vector<DampedMode> modes;
+  };
+  struct Segment {
+    int first, n, decomp, offset;  // offset into the flat per-phase arrays
+    bool left_stuck, right_stuck;
+    double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
+  };
+  // A contact block and the segments it borders: its force is a + b tau + modal part.
+  struct Edge {
+    int block;
+    int nseg = 0;
+    int seg[2] = {-1, -1};
+    int row[2] = {0, 0};  // row of the segment's mode matrix for the adjacent groove block
+    double a = 0, b = 0;
+  };
+
+  // F(tau), its tau-derivative and bounds on the modal part of F and of dF/dtau from tau on.
+  void edge_force(const Edge& e, double tau, double& F, double& dF, double& modal_bound, double& slope_bound);
+  double march(const Chain& c, const Edge& e, double tau_limit);
+
+  double K_int_ = 0, t0_ = 0;
+  std::vector<Decomp> decomps_;
+  std::map<std::tuple<int, int, int>, int> cache_;  // (n, left kind, right kind) -> decomps_ index
+  std::vector<Segment> segs_;
+  std::vector<Edge> edges_;
+  std::vector<int> affine_blocks_;     // contact blocks with no groove neighbour
+  std::vector<double> affine_a_;       // their force at t0
+  std::vector<double> A_, B_, q0_, p0_, rhs_, work_;  // flat, one entry per groove block
+};
+
+}  // namespace sb::event_detail

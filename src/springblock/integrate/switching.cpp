@@ -1,0 +1,73 @@
+#include "springblock/integrate/switching.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sb::event_detail {
+
+void Switching::sync(const Chain& c, const State& s) {
+  n_sliding_ = 0;
+  for (int i = 0; i < c.N; ++i) {
+    mobile_[i] = (!c.contact[i] || s.dir[i] != 0) ? 1.0 : 0.0;
+    f_kin_[i] = s.dir[i] * c.f_kinetic[i];
+    n_sliding_ += s.dir[i] != 0;
+  }
+}
+
+int Switching::settle(const Chain& c, State& s) {
+  if (s.t != instant_) {
+    instant_ = s.t;
+    at_instant_ = 0;
+  }
+  const std::int64_t limit = 100LL * c.N;
+  int made = 0;
+  bool first_pass = true, changed = true;
+  while (changed) {
+    changed = false;
+    for (int i = 0; i < c.N; ++i) {
+      if (!c.contact[i]) continue;
+      const bool event_here = first_pass && flagged_[i];
+      if (s.dir[i] != 0) {
+        const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
+        const double dv = s.dir[i] * s.v[i];
+        // At rest and pulled less than kinetic friction: it cannot move in its direction.
+        const bool cannot_go = dv == 0.0 && s.dir[i] * F - c.f_kinetic[i] <= 0.0;
+        if (event_here || dv < 0.0 || cannot_go) {
+          s.v[i] = 0.0;
+          s.dir[i] = 0;
+          ++made;
+          changed = true;
+        }
+      } else if (event_here) {
+        // The located crossing is the switch, even if round-off left |F| a hair below f_static.
+        const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
+        s.dir[i] = F >= 0 ? 1 : -1;
+        ++made;
+        changed = true;
+        continue;
+      }
+      if (s.dir[i] == 0) {
+        const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
+        if (std::fabs(F) > c.f_static[i]) {
+          s.dir[i] = F > 0 ? 1 : -1;
+          ++made;
+          changed = true;
+        }
+      }
+    }
+    if (first_pass)
+      for (auto& f : flagged_) f = 0;
+    first_pass = false;
+    if (at_instant_ + made > limit)
+      throw std::runtime_error("switching cascade: more than " + std::to_string(limit) +
+                               " stick/slip switches at t = " + std::to_string(s.t) +
+                               " s without time advancing (is mu_d > mu_s kept for some block?)");
+  }
+  at_instant_ += made;
+  s.switches += made;
+  sync(c, s);
+  return made;
+}
+
+}  // namespace sb::event_detail

@@ -1,0 +1,44 @@
+#pragma once
+// The stick/slip rules applied at one instant by the event-driven integrator.
+//
+//  * A sliding block whose velocity reached zero (an event located there, or found reversed)
+//    stops: v := 0. It stays stuck if |F| <= f_static, else it slides on in the direction of F.
+//  * A stuck block whose |F| exceeds f_static, or whose threshold crossing was located at this
+//    instant, starts to slide in the direction of F.
+//  * A block at rest that has just been set sliding but whose kinetic friction exceeds the
+//    force (only possible when mu_d > mu_s is kept) stops again at once.
+// Blocks are visited in index order and the passes repeat until nothing changes, so the outcome
+// is deterministic. Each switch is counted; more than 100 N at one instant is a cascade that
+// would never end, reported as std::runtime_error.
+#include <cstdint>
+#include <vector>
+
+#include "springblock/model.hpp"
+#include "springblock/state.hpp"
+
+namespace sb::event_detail {
+
+class Switching {
+ public:
+  explicit Switching(int N) : flagged_(N, 0), mobile_(N), f_kin_(N) {}
+
+  // Mark a block whose event was located at the current instant (cleared by settle()).
+  void flag(int i) { flagged_[i] = 1; }
+  // Apply the rules at s.t; returns the number of switches made. Throws on a cascade.
+  int settle(const Chain& c, State& s);
+  // Rebuild mobile / f_kin from s.dir (at the start of a run).
+  void sync(const Chain& c, const State& s);
+
+  const double* mobile() const { return mobile_.data(); }  // 1 = groove or sliding, 0 = stuck
+  const double* f_kin() const { return f_kin_.data(); }    // signed kinetic friction
+  int n_sliding() const { return n_sliding_; }
+
+ private:
+  std::vector<std::uint8_t> flagged_;
+  std::vector<double> mobile_, f_kin_;
+  int n_sliding_ = 0;
+  double instant_ = -1;            // time of the last settle, to count switches per instant
+  std::int64_t at_instant_ = 0;    // switches made at that time so far
+};
+
+}  // namespace sb::event_detail

@@ -1,0 +1,242 @@
+// Tests of the event-driven integrator (Dormand-Prince 5(4) with located switching events and
+// an exact quiet-phase propagator). References: the closed-form single-block cycle, the stepper
+// itself at a much tighter tolerance, and the paper's RK4 at two step sizes.
+#include "springblock/integrate/event_driven.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <future>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "springblock/integrate/quiet_phase.hpp"
+#include "springblock/integrate/rk4.hpp"
+#include "springblock/observe/friction_observer.hpp"
+#include "springblock/scene.hpp"
+#include "springblock/theory.hpp"
+
+namespace {
+
+class NullObserver final : public sb::Observer {
+ public:
+  void sample(const sb::Chain&, const sb::State&) override {}
+};
+
+// The paper's default block (N = 200, L_x = 4 cm): m = 2.4 mg, K_s = 1e4 N/m, F_n = 2 N.
+sb::Chain single_block(double mu_s, double mu_d) {
+  sb::Chain c;
+  c.N = 1;
+  c.K_s = 1e4;
+  c.m = 2.4e-6;
+  c.v_slider = 5e-4;
+  c.F_n = c.F_load = 2.0;
+  c.contact = {1};
+  c.mu_s = {mu_s};
+  c.mu_d = {mu_d};
+  c.f_static = {mu_s * c.F_n};
+  c.f_kinetic = {mu_d * c.F_n};
+  c.n_contact = 1;
+  return c;
+}
+
+// Switching instants of a single block over three cycles at tolerance tol, and their
+// largest error against the closed form, in units of the cycle period T_d + T_s. (A position
+// error du made while sliding shifts the next slip onset by du / v, so onset errors are measured
+// against the cycle, not against the short sliding time.)
+double single_block_error(double tol) {
+  const double mu_s = 1.0, mu_d = 0.3;
+  const sb::Chain c = single_block(mu_s, mu_d);
+  const auto cyc = sb::theory::cycle({c.m, c.K_s, c.v_slider, c.F_n}, mu_s, mu_d);
+  const double t1 = mu_s * c.F_n / (c.K_s * c.v_slider);
+  std::vector<double> expect;
+  for (int k = 0; k < 3; ++k) {
+    const double start = t1 + k * (cyc.T_d_s + cyc.T_s_s);
+    expect.push_back(start);
+    expect.push_back(start + cyc.T_d_s);
+  }
+  sb::State s = sb::State::at_rest(c);
+  sb::EventDriven ev(tol);
+  std::vector<double> log;
+  ev.set_switch_log(&log);
+  NullObserver obs;
+  const double t_end = expect.back() + 0.5 * cyc.T_s_s;
+  ev.run(c, s, t_end, 1e-3, obs);
+  EXPECT_EQ(log.size(), expect.size());
+  if (log.size() != expect.size()) return 1.0;
+  double worst = 0;
+  const double period = cyc.T_d_s + cyc.T_s_s;
+  for (std::size_t k = 0; k < log.size(); ++k) worst = std::max(worst, std::fabs(log[k] - expect[k]) / period);
+  // Durations of each sliding phase against T_d.
+  for (std::size_t k = 0; k < log.size(); k += 2)
+    EXPECT_NEAR(log[k + 1] - log[k], cyc.T_d_s, 50 * tol * period) << "tol " << tol;
+  // Rest offset: stuck after the third stop at slider position + delta_r.
+  const double u_rest = c.v_slider * expect.back() + cyc.delta_r_m;
+  EXPECT_NEAR(s.u[0], u_rest, 20 * tol * cyc.r0_m) << "tol " << tol;
+  EXPECT_EQ(s.dir[0], 0);
+  return worst;
+}
+
+TEST(EventIntegrator, SingleBlockMatchesClosedFormAndConvergesWithTol) {
+  const double e6 = single_block_error(1e-6);
+  const double e8 = single_block_error(1e-8);
+  const double e10 = single_block_error(1e-10);
+  // Observed order in the step size: h ~ tol^(1/5), so error ~ tol^(p/5).
+  const double p = 5.0 * std::log10(e6 / e10) / 4.0;
+  std::printf("single block: max switching-time error / period at tol 1e-6, 1e-8, 1e-10: %.3e %.3e %.3e, "
+              "observed order %.2f\n", e6, e8, e10, p);
+  EXPECT_LT(e6, 10 * 1e-6);
+  EXPECT_LT(e10, 10 * 1e-10);
+  EXPECT_GT(p, 4.0);
+  // Error proportional to tol (local error h^5 with h ~ tol^(1/5)): two decades in tol should give
+  // well over one decade in error, unless already at round-off.
+  EXPECT_TRUE(e8 < e6 / 10 || e8 < 1e-10);
+  EXPECT_TRUE(e10 < e8 / 10 || e10 < 1e-10);
+}
+
+// Groove chain N = 10 with pattern 3 pawls, 2 grooves; stuck blocks held by huge thresholds.
+sb::Chain grooved_chain(double gamma) {
+  sb::Chain c;
+  c.N = 10;
+  c.K_s = 1e4;
+  c.K_int = 7.3e5;
+  c.m = 2.4e-6;
+  c.gamma = gamma;
+  c.v_slider = 5e-4;
+  c.F_n = 2.0;
+  c.contact = {1, 1, 1, 0, 0, 1, 1, 1, 0, 0};
+  c.n_contact = 6;
+  c.F_load = c.F_n * 6;
+  for (int i = 0; i < c.N; ++i) {
+    const double big = c.contact[i] ? 1e9 : 0.0;
+    c.mu_s.push_back(big);
+    c.mu_d.push_back(0);
+    c.f_static.push_back(big);
+    c.f_kinetic.push_back(0);
+  }
+  return c;
+}
+
+TEST(EventIntegrator, QuietPhaseMatchesFineStepping) {
+  for (double gamma : {1e4, 0.0, 3e7}) {  // damped, undamped, overdamped low modes
+    const sb::Chain c = grooved_chain(gamma);
+    sb::State s0 = sb::State::at_rest(c);
+    for (int i = 0; i < c.N; ++i) s0.u[i] = 1e-5 * std::sin(1.0 + i);
+    for (int i = 0; i < c.N; ++i) s0.v[i] = c.contact[i] ? 0.0 : 0.02 * std::cos(2.0 + i);
+    s0.t = 0.01;
+    const double T = 0.01 + 3e-5;
+
+    sb::event_detail::QuietPhase q(c);
+    EXPECT_EQ(q.distinct_decompositions(), 2);  // interior groove and the groove at the chain end
+    q.begin(c, s0.t, s0.u.data(), s0.v.data());
+    std::vector<double> u = s0.u, v = s0.v;
+    q.evaluate(T, u.data(), v.data());
+
+    sb::State s = s0;
+    sb::EventDriven fine(1e-13, false);
+    NullObserver obs;
+    fine.run(c, s, T, 1.0, obs);
+    ASSERT_DOUBLE_EQ(s.t, T);
+    double umax = 0, vmax = 0;
+    for (int i = 0; i < c.N; ++i) umax = std::max(umax, std::fabs(s.u[i])), vmax = std::max(vmax, std::fabs(s.v[i]));
+    for (int i = 0; i < c.N; ++i) {
+      EXPECT_NEAR(u[i], s.u[i], 1e-9 * umax) << "gamma " << gamma << " block " << i;
+      EXPECT_NEAR(v[i], s.v[i], 1e-8 * vmax) << "gamma " << gamma << " block " << i;
+    }
+  }
+}
+
+sb::Scene small_scene(int N, const char* pattern) {
+  sb::Scene sc;
+  sc.geometry.N = N;
+  sc.geometry.L_x_m = 0.04 * N / 200.0;  // the paper's block size
+  sc.pattern = sb::parse_pattern(pattern);
+  sc.run.stop_after_mu_s = true;
+  sc.run.duration_t0 = 2.0;
+  sc.reps = 1;
+  sc.seed = 3;
+  return sc;
+}
+
+struct Peak {
+  double mu_s, t_peak;
+  std::int64_t rhs;
+};
+
+Peak first_peak(const sb::Scene& sc, sb::Integrator& integ) {
+  const sb::Chain c = sb::build_chain(sc, 0);
+  sb::State s = sb::State::at_rest(c);
+  sb::FrictionObserverConfig cfg;
+  cfg.F_load = c.F_load;
+  cfg.peak_drop = sc.rules.peak_drop;
+  cfg.stop_after_mu_s = true;
+  sb::FrictionObserver obs(cfg);
+  integ.run(c, s, sc.duration(), sc.run.sample_dt_s, obs);
+  EXPECT_TRUE(obs.slipped());
+  return {obs.mu_s(), obs.t_peak(), s.rhs_evals};
+}
+
+TEST(EventIntegrator, FastForwardAgreesWithStepping) {
+  // The sampled mu_s jumps when a switch moves across a sample time, so the comparison is on
+  // the switching instants (the stepped run at a tight tolerance, since its error accumulates
+  // over the long stuck phases that the fast-forward crosses exactly) and loosely on mu_s.
+  const sb::Scene sc = small_scene(40, "periodic:4,4");
+  sb::EventDriven on(1e-9, true), off(1e-11, false);
+  std::vector<double> log_on, log_off;
+  on.set_switch_log(&log_on);
+  off.set_switch_log(&log_off);
+  const Peak a = first_peak(sc, on), b = first_peak(sc, off);
+  std::printf("periodic:4,4 N=40: fast-forward mu_s %.12f t %.9g rhs %lld | stepping mu_s %.12f t %.9g rhs %lld\n",
+              a.mu_s, a.t_peak, (long long)a.rhs, b.mu_s, b.t_peak, (long long)b.rhs);
+  ASSERT_EQ(log_on.size(), log_off.size());
+  ASSERT_GE(log_on.size(), 4u);
+  // Measured: the stepped instants differ by 3.9e-8 s at tol 1e-9 and 4.5e-10 s at 1e-11,
+  // converging linearly in tol onto the fast-forward ones (which do not move between 1e-9 and
+  // 1e-11): the stepped run's error is its drift over the 0.07 s stuck phase.
+  for (std::size_t k = 0; k < log_on.size(); ++k)
+    EXPECT_NEAR(log_on[k], log_off[k], 1e-8 * log_on[k]) << "switch " << k;
+  EXPECT_NEAR(a.mu_s, b.mu_s, 1e-4);
+  EXPECT_DOUBLE_EQ(a.t_peak, b.t_peak);  // both on the same sample grid
+  EXPECT_LT(a.rhs * 100, b.rhs);
+}
+
+TEST(EventIntegrator, FirstPeakWithinRk4ConvergenceTrend) {
+  const sb::Scene sc = small_scene(40, "smooth");
+  sb::EventDriven ev(1e-10);
+  sb::Rk4 coarse(1e-7), fine(2.5e-8);
+  const Peak e = first_peak(sc, ev), r1 = first_peak(sc, coarse), r2 = first_peak(sc, fine);
+  std::printf("smooth N=40 first peak: event %.12f @ %.9g | rk4 1e-7 %.12f @ %.9g | rk4 2.5e-8 %.12f @ %.9g\n",
+              e.mu_s, e.t_peak, r1.mu_s, r1.t_peak, r2.mu_s, r2.t_peak);
+  // RK4 resolves switching to one step (first order): its error shrinks ~4x from 1e-7 to 2.5e-8,
+  // so the event result must be closer to the fine RK4 than the coarse one is, within the
+  // remaining first-order distance.
+  const double d_coarse = std::fabs(r1.mu_s - e.mu_s), d_fine = std::fabs(r2.mu_s - e.mu_s);
+  EXPECT_LE(d_fine, std::max(d_coarse, 1e-9) * 1.0 + 1e-9);
+  EXPECT_LT(d_fine, 2.0 * std::fabs(r1.mu_s - r2.mu_s) + 1e-6);
+  EXPECT_NEAR(e.t_peak, r2.t_peak, 2e-5);  // one sample of 1e-5 either way
+}
+
+TEST(EventIntegrator, CascadeIsReportedNotHung) {
+  // Kinetic friction above the static threshold: a block that reaches its threshold cannot
+  // move and cannot stay stuck.
+  sb::Chain c = single_block(0.5, 1.0);
+  auto task = std::async(std::launch::async, [c] {
+    sb::State s = sb::State::at_rest(c);
+    sb::EventDriven ev(1e-9);
+    NullObserver obs;
+    try {
+      ev.run(c, s, 0.3, 1e-3, obs);
+      return std::string("ran, switches ") + std::to_string(s.switches);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+  });
+  ASSERT_EQ(task.wait_for(std::chrono::seconds(5)), std::future_status::ready) << "integrator hung";
+  const std::string what = task.get();
+  std::printf("cascade case: %s\n", what.c_str());
+  EXPECT_NE(what.find("switching cascade"), std::string::npos);
+}
+
+}  // namespace

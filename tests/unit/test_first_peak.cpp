@@ -1,0 +1,76 @@
+// The first-peak rule on synthetic mu(t) histories: precursor dips smaller than peak_drop do
+// not end the loading phase; the first larger drop does, and mu_s is the peak before it.
+#include <gtest/gtest.h>
+
+#include "springblock/observe/friction_observer.hpp"
+
+using namespace sb;
+
+namespace {
+// A one-block "chain" whose friction equals its driving force K_s (v t - u): choosing u per
+// sample scripts any mu(t) we like.
+struct Scripted {
+  Chain c;
+  State s;
+  Scripted() {
+    c.N = 1;
+    c.K_s = 1;
+    c.v_slider = 0;
+    c.F_load = 1;
+    c.F_n = 1;
+    c.contact = {1};
+    c.f_static = {10};
+    c.f_kinetic = {0.5};
+    c.mu_s = {10};
+    c.mu_d = {0.5};
+    c.n_contact = 1;
+    s = State::at_rest(c);
+  }
+  void feed(FrictionObserver& obs, double t, double mu) {
+    s.t = t;
+    s.u[0] = -mu;  // friction = K_s (0 - u) = mu
+    obs.sample(c, s);
+  }
+};
+}  // namespace
+
+TEST(FirstPeak, PrecursorDipsDoNotCount) {
+  Scripted sc;
+  FrictionObserverConfig cfg;
+  cfg.peak_drop = 0.05;
+  FrictionObserver obs(cfg);
+  double t = 0;
+  for (double mu = 0; mu < 0.6; mu += 0.01) sc.feed(obs, t += 1, mu);
+  sc.feed(obs, t += 1, 0.57);  // precursor: 0.03 below the running max
+  EXPECT_FALSE(obs.slipped());
+  for (double mu = 0.57; mu < 0.73; mu += 0.01) sc.feed(obs, t += 1, mu);
+  const double peak = obs.max_mu();
+  sc.feed(obs, t += 1, 0.50);  // macroscopic slip
+  EXPECT_TRUE(obs.slipped());
+  EXPECT_DOUBLE_EQ(obs.mu_s(), peak);
+  EXPECT_GT(obs.mu_s(), 0.72);
+}
+
+TEST(FirstPeak, MuDAveragesOnlyTheWindowAfterTheSlip) {
+  Scripted sc;
+  FrictionObserverConfig cfg;
+  cfg.peak_drop = 0.05;
+  cfg.mu_d_skip_s = 10;
+  FrictionObserver obs(cfg);
+  sc.feed(obs, 0, 0.0);
+  sc.feed(obs, 1, 0.8);
+  sc.feed(obs, 2, 0.3);  // slip at t = 2
+  for (int k = 3; k < 12; ++k) sc.feed(obs, k, 0.1);   // inside the skip: ignored
+  for (int k = 12; k < 22; ++k) sc.feed(obs, k, 0.6);  // window
+  EXPECT_DOUBLE_EQ(obs.mu_d(), 0.6);
+  EXPECT_EQ(obs.window_samples(), 10);
+}
+
+TEST(FirstPeak, NoSlipMeansUndefinedCoefficients) {
+  Scripted sc;
+  FrictionObserver obs(FrictionObserverConfig{});
+  for (int k = 0; k < 10; ++k) sc.feed(obs, k, 0.1 * k);
+  EXPECT_FALSE(obs.slipped());
+  EXPECT_TRUE(std::isnan(obs.mu_s()));
+  EXPECT_TRUE(std::isnan(obs.mu_d()));
+}
