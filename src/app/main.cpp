@@ -188,7 +188,8 @@ int main(int argc, char** argv) {
     }
     return cmd_theory(theory_fields, theory, theory_json);
   } catch (const sb::InputError& e) {
-    std::fprintf(stderr, "springblock: invalid %s: %s\n", e.field.c_str(), e.what());
+    // what() already starts with the field name: "pattern: unknown pattern kind ..."
+    std::fprintf(stderr, "springblock: invalid %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "springblock: error: %s\n", e.what());

@@ -4,6 +4,7 @@
 #include <gsl/gsl_rng.h>
 
 #include <cmath>
+#include <complex>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -44,6 +45,37 @@ void require(bool ok, const std::string& field, double value, const std::string&
 }
 
 bool finite(double x) { return std::isfinite(x); }
+
+// RK4 is stable for a mode when |R(h lambda)| <= 1, R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24. With
+// damping a mode of frequency w has lambda = -gamma/2 +- sqrt(gamma^2/4 - w^2); every w^2 lies in
+// the Gershgorin band [K_s, K_s + 4 K_int] / m. Overdamped modes reach lambda ~ -gamma, where the
+// real-axis limit h gamma <= 2.785 binds, and between the axes the region is narrower still
+// (|z| ~ 2.62 at 123 degrees), so the undamped limit alone does not suffice. Checked on a grid.
+bool rk4_damped_stable(double h, double gamma, double w2_lo, double w2_hi) {
+  constexpr int kGrid = 1024;
+  for (int k = 0; k <= kGrid; ++k) {
+    const double w2 = w2_lo + (w2_hi - w2_lo) * k / kGrid;
+    const std::complex<double> root = std::sqrt(std::complex<double>(0.25 * gamma * gamma - w2, 0.0));
+    for (const auto lambda : {-0.5 * gamma + root, -0.5 * gamma - root}) {
+      const std::complex<double> z = h * lambda;
+      const auto R = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
+      if (std::abs(R) > 1.0 + 1e-12) return false;
+    }
+  }
+  return true;
+}
+
+// Largest stable RK4 step with damping, by bisection below the undamped limit.
+double rk4_damped_stable_dt(const DerivedParameters& d, double gamma) {
+  const double w2_lo = d.K_s_N_per_m / d.m_kg, w2_hi = d.omega_max * d.omega_max;
+  double lo = 0, hi = rk4_stable_dt(d);
+  if (rk4_damped_stable(hi, gamma, w2_lo, w2_hi)) return hi;
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (rk4_damped_stable(mid, gamma, w2_lo, w2_hi) ? lo : hi) = mid;
+  }
+  return lo;
+}
 
 }  // namespace
 
@@ -101,6 +133,13 @@ void validate(const Scene& s) {
       throw InputError("dt", "step " + str(r.dt_s) + " s exceeds the RK4 stability limit of this chain; "
                              "the largest stable step is " + str(h_max) +
                              " s (h * omega_max <= 2 sqrt 2, omega_max = sqrt((K_s + 4 K_int)/m))");
+    if (s.material.gamma_per_s > 0) {
+      const double h_damped = rk4_damped_stable_dt(s.derived(), s.material.gamma_per_s);
+      if (r.dt_s > h_damped)
+        throw InputError("dt", "step " + str(r.dt_s) + " s exceeds the RK4 stability limit with damping " +
+                                   str(s.material.gamma_per_s) + " /s; the largest stable step is " +
+                                   str(h_damped) + " s (overdamped modes need h * gamma <= 2.785)");
+    }
     const double steps = s.duration() / r.dt_s;
     require(steps <= 1e13, "dt", r.dt_s, "a run of at most 1e13 steps (duration / dt)");
   }

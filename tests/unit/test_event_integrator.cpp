@@ -148,6 +148,46 @@ TEST(EventIntegrator, QuietPhaseMatchesFineStepping) {
   }
 }
 
+TEST(EventIntegrator, EdgeSearchFindsFirstSlipWithRingingModes) {
+  // After a slip event the grooves ring while a stuck block next to them sits just below its
+  // threshold: the case where the grid march and its grazing bound matter. Reference: the same
+  // chain stepped by Dormand-Prince at tol 1e-12 (no fast-forward), first switch instant.
+  const sb::Chain base = grooved_chain(1e4);
+  const std::vector<double> fractions = {0.02, 0.1, 0.3, 0.6, 0.9, 1.5};
+  for (std::size_t n = 0; n < fractions.size(); ++n) {
+    sb::Chain c = base;
+    sb::State s0 = sb::State::at_rest(c);
+    for (int i = 0; i < c.N; ++i) s0.u[i] = 1e-6 * std::sin(1.0 + i);
+    for (int i = 0; i < c.N; ++i) s0.v[i] = c.contact[i] ? 0.0 : 0.05 * std::cos(2.0 + 3.0 * i + n);
+    s0.t = 0.01;
+    // Thresholds: far for blocks 0, 1, 6; blocks 2, 5, 7 (next to a groove) a fraction of the
+    // groove's force swing above their present force, so the ringing decides who slips first.
+    const double swing = c.K_int * 0.05 / std::sqrt((c.K_s + 4 * c.K_int) / c.m);
+    for (int i = 0; i < c.N; ++i) {
+      if (!c.contact[i]) continue;
+      const double F = c.driving_force(i, s0.u.data(), s0.v.data(), s0.t);
+      const bool edge = i == 2 || i == 5 || i == 7;
+      c.f_static[i] = std::fabs(F) + (edge ? fractions[n] * swing * (1.0 + 0.1 * i) : 1.0);
+      c.mu_s[i] = c.f_static[i] / c.F_n;
+    }
+    const double T = s0.t + 2e-3;
+    sb::event_detail::QuietPhase q(c);
+    q.begin(c, s0.t, s0.u.data(), s0.v.data());
+    const auto next = q.next_threshold(c, T);
+
+    sb::State s = s0;
+    sb::EventDriven fine(1e-12, false);
+    std::vector<double> log;
+    fine.set_switch_log(&log);
+    NullObserver obs;
+    fine.run(c, s, T, 1.0, obs);
+    ASSERT_FALSE(log.empty()) << "fraction " << fractions[n];
+    std::printf("ringing edge, margin %.2f swing: quiet search t = %.15g (block %d), DP5 1e-12 t = %.15g\n",
+                fractions[n], next.t, next.block, log.front());
+    EXPECT_NEAR(next.t, log.front(), 1e-10) << "fraction " << fractions[n];
+  }
+}
+
 sb::Scene small_scene(int N, const char* pattern) {
   sb::Scene sc;
   sc.geometry.N = N;

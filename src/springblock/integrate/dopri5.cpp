@@ -33,16 +33,17 @@ double Dopri5::error_norm(const double* u, const double* v, const double* mobile
   double const* const* K = k_;
   // Max norm over the moving components: stuck blocks carry no error, and an RMS over the
   // whole chain would dilute the error of the one block that slides.
+  // Branch-free (stuck blocks weighted by mobile = 0) so the loop vectorises.
   double worst = 0;
   for (int i = 0; i < N_; ++i) {
-    if (mobile[i] == 0.0) continue;
     const double eu = h_ * (T::e1 * K[0][i] + T::e3 * K[2][i] + T::e4 * K[3][i] + T::e5 * K[4][i] +
                             T::e6 * K[5][i] + T::e7 * K[6][i]);
     const double ev = h_ * (T::e1 * K[7][i] + T::e3 * K[9][i] + T::e4 * K[10][i] + T::e5 * K[11][i] +
                             T::e6 * K[12][i] + T::e7 * K[13][i]);
     const double su = atol_u + rtol * std::max(std::fabs(u[i]), std::fabs(u1_[i]));
     const double sv = atol_v + rtol * std::max(std::fabs(v[i]), std::fabs(v1_[i]));
-    worst = std::max(worst, std::max(std::fabs(eu) / su, std::fabs(ev) / sv));
+    const double e = mobile[i] * std::max(std::fabs(eu) / su, std::fabs(ev) / sv);
+    worst = worst > e ? worst : e;
   }
   return worst;
 }

@@ -8,12 +8,19 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
                            double window) {
   const int N = c.N;
   const double t = s.t;
+  // At theta = 1 the continuous extension is the step's end point: read it, do not evaluate it.
+  const double* u1 = dp.u1();
+  const double* v1 = dp.v1();
+  auto nb_u = [&](int j, double th) {
+    if (mobile[j] == 0.0) return s.u[j];  // a stuck neighbour does not move
+    return th == 1.0 ? u1[j] : dp.dense_u(j, th);
+  };
   auto g = [&](int i, double th) {
-    if (s.dir[i] != 0) return s.dir[i] * dp.dense_v(i, th);
+    if (s.dir[i] != 0) return s.dir[i] * (th == 1.0 ? v1[i] : dp.dense_v(i, th));
     // Stuck: v_i = 0 (no damping force) and u_i does not move.
     double F = c.K_s * (c.v_slider * (t + th * h) - s.u[i]);
-    if (i > 0) F += c.K_int * (dp.dense_u(i - 1, th) - s.u[i]);
-    if (i + 1 < N) F += c.K_int * (dp.dense_u(i + 1, th) - s.u[i]);
+    if (i > 0) F += c.K_int * (nb_u(i - 1, th) - s.u[i]);
+    if (i + 1 < N) F += c.K_int * (nb_u(i + 1, th) - s.u[i]);
     return c.f_static[i] - std::fabs(F);
   };
   double best = 2.0;

@@ -41,7 +41,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int) {
         if (r + 1 < s.n) K(r, r + 1) = K(r + 1, r) = -c.K_int;
       }
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K);
-      Decomp d{es.eigenvectors(), es.eigenvalues(), {}};
+      Decomp d{es.eigenvectors(), es.eigenvalues(), {}, {}, {}, {}, {}};
       for (int k = 0; k < s.n; ++k) d.modes.push_back({0.5 * c.gamma, d.lambda[k] / c.m});
       decomps_.push_back(std::move(d));
       it = cache_.emplace(key, static_cast<int>(decomps_.size()) - 1).first;
@@ -76,14 +76,27 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int) {
         e.row[e.nseg++] = 0;
       }
     }
-    if (e.nseg) edges_.push_back(e);
-    else affine_blocks_.push_back(j);
+    if (e.nseg) {
+      for (int n = 0; n < e.nseg; ++n) {
+        const Segment& s = segs_[e.seg[n]];
+        const Decomp& d = decomps_[s.decomp];
+        for (int k = 0; k < s.n; ++k) e.march.add_mode(K_int_ * d.Q(e.row[n], k), d.modes[k], s.offset + k);
+      }
+      e.march.finish();
+      edges_.push_back(std::move(e));
+    } else {
+      affine_blocks_.push_back(j);
+    }
   }
   affine_a_.resize(affine_blocks_.size());
+  qs_.resize(offset);
+  qds_.resize(offset);
+  order_.resize(edges_.size());
 }
 
 void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
   t0_ = t0;
+  sample_valid_ = false;
   const double mg = c.m * c.gamma;
   for (Segment& s : segs_) {
     const Decomp& d = decomps_[s.decomp];
@@ -147,112 +160,120 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
   for (std::size_t k = 0; k < affine_blocks_.size(); ++k)
     affine_a_[k] = c.driving_force(affine_blocks_[k], u, v, t0);
   for (Edge& e : edges_) {
-    e.a = c.driving_force(e.block, u, v, t0);
-    e.b = c.K_s * c.v_slider;
+    double a = c.driving_force(e.block, u, v, t0), b = c.K_s * c.v_slider;
     for (int n = 0; n < e.nseg; ++n) {
       const Segment& s = segs_[e.seg[n]];
       const Decomp& d = decomps_[s.decomp];
-      e.b += c.K_int * B_[s.offset + e.row[n]];
-      for (int k = 0; k < s.n; ++k) e.a -= c.K_int * d.Q(e.row[n], k) * q0_[s.offset + k];
+      b += c.K_int * B_[s.offset + e.row[n]];
+      for (int k = 0; k < s.n; ++k) a -= c.K_int * d.Q(e.row[n], k) * q0_[s.offset + k];
+    }
+    e.march.set_affine(a, b);
+  }
+}
+
+void QuietPhase::to_physical(const Segment& s, double t, bool live, const double* q, const double* qd,
+                             double* u, double* v) const {
+  const Decomp& d = decomps_[s.decomp];
+  for (int r = 0; r < s.n; ++r) {
+    u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t;
+    v[s.first + r] = B_[s.offset + r];
+  }
+  if (!live) return;
+  // Column-major Q: accumulate mode by mode so the inner loop runs down a contiguous column.
+  for (int k = 0; k < s.n; ++k) {
+    const double* col = d.Q.data() + static_cast<std::ptrdiff_t>(k) * s.n;
+    const double qk = q[k], qdk = qd[k];
+    double* uu = u + s.first;
+    double* vv = v + s.first;
+    for (int r = 0; r < s.n; ++r) {
+      uu[r] += col[r] * qk;
+      vv[r] += col[r] * qdk;
     }
   }
+}
+
+void QuietPhase::row_to_physical(const Segment& s, int r, double t, const double* q, const double* qd,
+                                 double* u, double* v) const {
+  const Decomp& d = decomps_[s.decomp];
+  double du = 0, dv = 0;
+  for (int k = 0; q != nullptr && k < s.n; ++k) {
+    du += d.Q(r, k) * q[k];
+    dv += d.Q(r, k) * qd[k];
+  }
+  if (q == nullptr) du = dv = 0;
+  u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t + du;
+  v[s.first + r] = B_[s.offset + r] + dv;
 }
 
 void QuietPhase::evaluate(double t, double* u, double* v) const {
   const double tau = t - t0_;
+  double q[64], qd[64];  // modes evaluated in blocks of 64: no allocation
   for (const Segment& s : segs_) {
     const Decomp& d = decomps_[s.decomp];
-    double q[64], qd[64];  // modes evaluated in blocks of 64: no allocation
-    for (int r = 0; r < s.n; ++r) {
-      u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t;
-      v[s.first + r] = B_[s.offset + r];
-    }
-    if (tau > s.dead_tau) continue;
+    const bool live = tau <= s.dead_tau;
+    to_physical(s, t, false, nullptr, nullptr, u, v);
+    if (!live) continue;
     for (int k0 = 0; k0 < s.n; k0 += 64) {
       const int k1 = std::min(s.n, k0 + 64);
       for (int k = k0; k < k1; ++k)
         d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q[k - k0], qd[k - k0]);
-      for (int r = 0; r < s.n; ++r) {
-        double du = 0, dv = 0;
-        for (int k = k0; k < k1; ++k) {
-          du += d.Q(r, k) * q[k - k0];
-          dv += d.Q(r, k) * qd[k - k0];
+      for (int k = k0; k < k1; ++k) {
+        const double* col = d.Q.data() + static_cast<std::ptrdiff_t>(k) * s.n;
+        for (int r = 0; r < s.n; ++r) {
+          u[s.first + r] += col[r] * q[k - k0];
+          v[s.first + r] += col[r] * qd[k - k0];
         }
-        u[s.first + r] += du;
-        v[s.first + r] += dv;
       }
     }
   }
 }
 
-void QuietPhase::edge_force(const Edge& e, double tau, double& F, double& dF, double& modal_bound,
-                            double& slope_bound) {
-  F = e.a + e.b * tau;
-  dF = e.b;
-  modal_bound = 0;
-  slope_bound = std::fabs(e.b);
-  for (int n = 0; n < e.nseg; ++n) {
-    const Segment& s = segs_[e.seg[n]];
-    const Decomp& d = decomps_[s.decomp];
-    for (int k = 0; k < s.n; ++k) {
-      double q, qd;
-      d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q, qd);
-      const double w = K_int_ * d.Q(e.row[n], k);
-      F += w * q;
-      dF += w * qd;
-      // The mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it), so it
-      // bounds |qd| and omega |q| for all later times.
-      const double energy = std::sqrt(qd * qd + d.modes[k].omega2 * q * q);
-      slope_bound += std::fabs(w) * energy;
-      modal_bound += std::fabs(w) * energy / std::sqrt(d.modes[k].omega2);
+void QuietPhase::set_sample_dt(double dt) {
+  sample_dt_ = dt;
+  for (Decomp& d : decomps_) {
+    const std::size_t n = d.modes.size();
+    d.s00.resize(n), d.s01.resize(n), d.s10.resize(n), d.s11.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      d.modes[k].eval(1.0, 0.0, dt, d.s00[k], d.s10[k]);
+      d.modes[k].eval(0.0, 1.0, dt, d.s01[k], d.s11[k]);
     }
   }
 }
 
-double QuietPhase::march(const Chain& c, const Edge& e, double tau_limit) {
-  const double fs = c.f_static[e.block];
-  double F, dF, mb, sb;
-  auto gap = [&](double tau) {
-    edge_force(e, tau, F, dF, mb, sb);
-    return fs - std::fabs(F);
-  };
-  // Bisection on a bracket with gap(lo) > 0 >= gap(hi); returns the crossed end.
-  auto refine = [&](double lo, double hi) {
-    for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(t0_ + hi); ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (gap(mid) > 0 ? lo : hi) = mid;
-    }
-    return hi;
-  };
-  double tau = 0, prev = 0;
-  for (long it = 0; it < 100000000L; ++it) {
-    const double g = gap(tau);
-    if (g <= 0) return tau == 0 ? 0.0 : refine(prev, tau);
-    if (mb <= 1e-16 * fs) {
-      // The modes have died out below round-off: the force is affine from here on.
-      return tau + affine_crossing(F, e.b, fs);
-    }
-    if (g <= 1e-15 * fs) return tau;  // touching the threshold: treat as reached
-    // Newton probe near the threshold: converges in a few steps where the safe march would
-    // creep. A sign change at the probe is a bracket; otherwise the march goes on safely.
-    const double rate = F > 0 ? dF : -dF;
-    if (g < 1e-3 * fs && rate > 0) {
-      const double probe = tau + g / rate;
-      if (probe <= tau_limit) {
-        if (gap(probe) <= 0) return refine(tau, probe);
-        gap(tau);  // restore F, dF and the bounds at tau
+void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
+  const double tau = t - t0_;
+  // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
+  // from that by round-off only. Restart from the closed form every 64 samples regardless.
+  const bool step = sample_valid_ && sample_dt_ > 0 && std::fabs((t - ts_) - sample_dt_) <= 1e-9 * sample_dt_ &&
+                    ++since_sync_ < 64;
+  if (!step) since_sync_ = 0;
+  for (const Segment& s : segs_) {
+    const bool live = tau <= s.dead_tau;
+    double* q = qs_.data() + s.offset;
+    double* qd = qds_.data() + s.offset;
+    if (live) {
+      const Decomp& d = decomps_[s.decomp];
+      if (step) {
+        for (int k = 0; k < s.n; ++k) {
+          const double a = q[k], b = qd[k];
+          q[k] = d.s00[k] * a + d.s01[k] * b;
+          qd[k] = d.s10[k] * a + d.s11[k] * b;
+        }
+      } else {
+        for (int k = 0; k < s.n; ++k) d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q[k], qd[k]);
       }
     }
-    // No crossing is possible before |F| has changed by g, at a rate of at most sb; nor before
-    // the affine part alone comes within the modal bound mb of the threshold.
-    double step = g / sb;
-    const double aff = e.a + e.b * tau;
-    if (mb < fs && std::fabs(aff) <= fs - mb) step = std::max(step, affine_crossing(aff, e.b, fs - mb));
-    prev = tau;
-    tau += step;
-    if (tau > tau_limit) return kInf;
+    if (ends_only) {
+      // Interior rows are left as they are: the caller's observer does not read them.
+      const double* lq = live ? q : nullptr;  // dead modes: the affine part alone
+      if (s.left_stuck) row_to_physical(s, 0, t, lq, qd, u, v);
+      if (s.right_stuck) row_to_physical(s, s.n - 1, t, lq, qd, u, v);
+    } else {
+      to_physical(s, t, live, q, qd, u, v);
+    }
   }
-  return tau;  // unreachable in practice: the march moved 1e8 guaranteed-safe steps
+  ts_ = t;
+  sample_valid_ = true;
 }
 
 QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
@@ -263,8 +284,17 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
     const double tau = affine_crossing(affine_a_[k], c.K_s * c.v_slider, c.f_static[j]);
     if (tau < best) best = tau, block = j;
   }
-  for (const Edge& e : edges_) {
-    const double tau = march(c, e, best);
+  // Search the edges likeliest to cross first first: each search stops at the best time so far.
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    Edge& e = edges_[k];
+    e.lower = e.march.lower_bound(q0_.data(), p0_.data(), c.f_static[e.block]);
+    order_[k] = static_cast<int>(k);
+  }
+  std::sort(order_.begin(), order_.end(), [&](int x, int y) { return edges_[x].lower < edges_[y].lower; });
+  for (int k : order_) {
+    Edge& e = edges_[k];
+    if (e.lower > best) break;
+    const double tau = e.march.first_crossing(q0_.data(), p0_.data(), c.f_static[e.block], best, t0_);
     if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;
   }
   return {t0_ + best, block};

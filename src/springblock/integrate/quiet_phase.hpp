@@ -16,9 +16,12 @@
 //
 // The next event is the first time a stuck block's driving force reaches +-f_static. A block
 // with stuck neighbours only has an affine force (closed form). A block next to a segment has an
-// affine force plus damped modes; its first crossing is found by a march whose steps cannot
-// skip a root (gap / bound on |dF/dt|, the bound from each mode's energy, which never grows),
-// then refined by bisection. Once the modes are below round-off the force is affine again.
+// affine force plus damped modes; its first crossing is searched by EdgeMarch (edge_march.hpp),
+// the blocks in order of a cheap lower bound on their crossing so that later searches stop early.
+//
+// Samples inside a quiet phase are served by sample(): the modal coordinates are advanced from
+// the previous sample by each mode's exact transition matrix over the sample spacing (no
+// transcendental calls), and segments whose modes have died out cost only their affine part.
 #include <map>
 #include <tuple>
 #include <vector>
@@ -26,6 +29,7 @@
 #include <Eigen/Dense>
 
 #include "springblock/integrate/damped_mode.hpp"
+#include "springblock/integrate/edge_march.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
@@ -40,6 +44,12 @@ class QuietPhase {
 
   // Exact u, v of every groove block at time t >= t0 (other entries untouched).
   void evaluate(double t, double* u, double* v) const;
+  // The same for a sequence of increasing sample times spaced by set_sample_dt's dt (any
+  // other spacing falls back to the closed form). With ends_only, only the groove blocks next to
+  // a contact block are exact (O(modes) per segment instead of O(n^2)); the others are left
+  // untouched. Enough for an observer that reads only the contact blocks' forces.
+  void sample(double t, double* u, double* v, bool ends_only = false);
+  void set_sample_dt(double dt);
 
   struct Next {
     double t;   // event time, or t_limit when no stuck block reaches its threshold before it
@@ -55,6 +65,7 @@ class QuietPhase {
     Eigen::MatrixXd Q;  // columns: orthonormal modes of K_seg
     Eigen::VectorXd lambda;
     std::vector<DampedMode> modes;
+    std::vector<double> s00, s01, s10, s11;  // per mode: transition over the sample spacing
   };
   struct Segment {
     int first, n, decomp, offset;  // offset into the flat per-phase arrays
@@ -67,12 +78,16 @@ class QuietPhase {
     int nseg = 0;
     int seg[2] = {-1, -1};
     int row[2] = {0, 0};  // row of the segment's mode matrix for the adjacent groove block
-    double a = 0, b = 0;
+    EdgeMarch march;
+    double lower = 0;  // lower bound on its crossing in the current phase
   };
 
-  // F(tau), its tau-derivative and bounds on the modal part of F and of dF/dtau from tau on.
-  void edge_force(const Edge& e, double tau, double& F, double& dF, double& modal_bound, double& slope_bound);
-  double march(const Chain& c, const Edge& e, double tau_limit);
+  // u, v of segment s at absolute time t from its modal coordinates q, qd.
+  void to_physical(const Segment& s, double t, bool live, const double* q, const double* qd, double* u,
+                   double* v) const;
+  // The same for row r of the segment only (q = nullptr: the affine part alone).
+  void row_to_physical(const Segment& s, int r, double t, const double* q, const double* qd, double* u,
+                       double* v) const;
 
   double K_int_ = 0, t0_ = 0;
   std::vector<Decomp> decomps_;
@@ -82,6 +97,11 @@ class QuietPhase {
   std::vector<int> affine_blocks_;     // contact blocks with no groove neighbour
   std::vector<double> affine_a_;       // their force at t0
   std::vector<double> A_, B_, q0_, p0_, rhs_, work_;  // flat, one entry per groove block
+  std::vector<double> qs_, qds_;  // modal coordinates at the last sample
+  std::vector<int> order_;        // edges by increasing lower bound
+  double sample_dt_ = 0, ts_ = 0;
+  int since_sync_ = 0;
+  bool sample_valid_ = false;
 };
 
 }  // namespace sb::event_detail

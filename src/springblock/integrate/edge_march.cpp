@@ -1,0 +1,169 @@
+#include "springblock/integrate/edge_march.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sb::event_detail {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Grid step in units of 1 / omega_max: the fastest mode turns by half a radian per step, so
+// the grazing bound M2 H^2 / 8 is ~1/32 of the modal amplitude and rarely needs subdividing.
+constexpr double kGrid = 0.5;
+// A provably safe skip replaces grid steps only when it saves this many of them: a direct
+// evaluation (exp and sincos per mode) costs roughly as much as 16 grid steps.
+constexpr double kJump = 16.0;
+// The grid recurrence is restarted from the closed form this often, so its round-off
+// (a few ulp per step of the modal part) never accumulates beyond ~1e-13 of it.
+constexpr int kResync = 256;
+constexpr int kMaxDepth = 30;   // grazing subdivision: 2^-30 of a grid step (~1e-15 s)
+constexpr int kGrazeBudget = 96;  // direct evaluations per grazing search
+
+// First tau >= 0 at which an affine force a + b tau reaches +-f (|a| <= f assumed).
+double affine_crossing(double a, double b, double f) {
+  if (b == 0.0) return kInf;
+  return std::max(((b > 0 ? f : -f) - a) / b, 0.0);
+}
+
+}  // namespace
+
+void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
+  const double omega = std::sqrt(mode.omega2);
+  modes_.push_back({w, omega, omega + 2.0 * mode.alpha, mode, 0, 0, 0, 0, index});
+}
+
+void EdgeMarch::finish() {
+  double omega_max = 0;
+  for (const Mode& m : modes_) omega_max = std::max(omega_max, m.omega);
+  H_ = kGrid / omega_max;
+  for (Mode& m : modes_) {
+    m.mode.eval(1.0, 0.0, H_, m.p00, m.p10);
+    m.mode.eval(0.0, 1.0, H_, m.p01, m.p11);
+  }
+  q_.assign(modes_.size(), 0.0);
+  qd_.assign(modes_.size(), 0.0);
+}
+
+void EdgeMarch::direct(const double* q0, const double* p0, double tau) {
+  ++direct_evals;
+  for (std::size_t k = 0; k < modes_.size(); ++k)
+    modes_[k].mode.eval(q0[modes_[k].index], p0[modes_[k].index], tau, q_[k], qd_[k]);
+}
+
+void EdgeMarch::grid_step() {
+  ++grid_steps;
+  for (std::size_t k = 0; k < modes_.size(); ++k) {
+    const Mode& m = modes_[k];
+    const double q = q_[k], qd = qd_[k];
+    q_[k] = m.p00 * q + m.p01 * qd;
+    qd_[k] = m.p10 * q + m.p11 * qd;
+  }
+}
+
+EdgeMarch::Sums EdgeMarch::sums(double tau) const {
+  Sums s{a_ + b_ * tau, b_, 0.0, std::fabs(b_), 0.0};
+  for (std::size_t k = 0; k < modes_.size(); ++k) {
+    const Mode& m = modes_[k];
+    s.F += m.w * q_[k];
+    s.dF += m.w * qd_[k];
+    // Energy bounds |qd| <= E, |q| <= E / omega, |q''| = |gamma qd + omega^2 q| <= (gamma + omega) E.
+    const double E = std::fabs(m.w) * std::sqrt(qd_[k] * qd_[k] + m.omega * m.omega * q_[k] * q_[k]);
+    s.sb += E;
+    s.mb += E / m.omega;
+    s.m2 += m.m2 * E;
+  }
+  return s;
+}
+
+double EdgeMarch::force(const double* q0, const double* p0, double tau) {
+  direct(q0, p0, tau);
+  double F = a_ + b_ * tau;
+  for (std::size_t k = 0; k < modes_.size(); ++k) F += modes_[k].w * q_[k];
+  return F;
+}
+
+bool EdgeMarch::graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi,
+                      double Fhi, double m2, int depth, double& where) {
+  const double h = hi - lo;
+  if (std::max(std::fabs(Flo), std::fabs(Fhi)) + 0.125 * m2 * h * h < fs) return false;
+  if (depth >= kMaxDepth || budget_-- <= 0) return false;  // below resolution (see header)
+  const double mid = 0.5 * (lo + hi), Fm = force(q0, p0, mid);
+  if (std::fabs(Fm) >= fs) {
+    where = mid;
+    return true;
+  }
+  return graze(q0, p0, fs, lo, Flo, mid, Fm, m2, depth + 1, where) ||
+         graze(q0, p0, fs, mid, Fm, hi, Fhi, m2, depth + 1, where);
+}
+
+double EdgeMarch::lower_bound(const double* q0, const double* p0, double fs) {
+  direct(q0, p0, 0.0);
+  const Sums s = sums(0.0);
+  const double g = fs - std::fabs(s.F);
+  if (g <= 0) return 0.0;
+  double skip = s.sb > 0 ? g / s.sb : kInf;
+  if (s.mb < fs && std::fabs(a_) <= fs - s.mb) skip = std::max(skip, affine_crossing(a_, b_, fs - s.mb));
+  return skip;
+}
+
+double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0) {
+  // Bisection on a bracket with |F(lo)| < fs <= |F(hi)|; returns the crossed end.
+  auto refine = [&](double lo, double hi) {
+    for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(t0 + hi); ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (std::fabs(force(q0, p0, mid)) < fs ? lo : hi) = mid;
+    }
+    return hi;
+  };
+  double tau = 0;
+  direct(q0, p0, 0.0);
+  Sums S = sums(0.0);
+  int since_sync = 0;
+  for (;;) {
+    const double g = fs - std::fabs(S.F);
+    if (g <= 0) return tau;  // only at tau = 0: later crossings are bracketed below
+    if (S.mb <= 1e-16 * fs) {
+      // The modes have died out below round-off: the force is affine from here on.
+      const double t = tau + affine_crossing(S.F, b_, fs);
+      return t <= tau_limit ? t : kInf;
+    }
+    if (tau >= tau_limit) return kInf;
+    // No crossing before |F| has changed by g at a rate of at most sb, nor before the affine
+    // part alone comes within the modal bound mb of the threshold.
+    double skip = S.sb > 0 ? g / S.sb : kInf;
+    const double aff = a_ + b_ * tau;
+    if (S.mb < fs && std::fabs(aff) <= fs - S.mb) skip = std::max(skip, affine_crossing(aff, b_, fs - S.mb));
+    if (skip >= kJump * H_) {
+      const double next = tau + skip;
+      if (next > tau_limit) return kInf;
+      direct(q0, p0, next);
+      S = sums(next);
+      since_sync = 0;
+      if (std::fabs(S.F) >= fs) return next;  // a safe skip ends at most on the threshold
+      tau = next;
+      continue;
+    }
+    const double t1 = tau + H_;
+    if (++since_sync >= kResync) {
+      direct(q0, p0, t1);
+      since_sync = 0;
+    } else {
+      grid_step();
+    }
+    const Sums S1 = sums(t1);
+    if (std::fabs(S1.F) >= fs) return refine(tau, t1);
+    if (std::max(std::fabs(S.F), std::fabs(S1.F)) + 0.125 * S.m2 * H_ * H_ >= fs) {
+      budget_ = kGrazeBudget;
+      double where = 0;
+      const bool hit = graze(q0, p0, fs, tau, S.F, t1, S1.F, S.m2, 0, where);
+      if (hit) return refine(tau, where);
+      direct(q0, p0, t1);  // the grazing search moved the mode state: restore it at t1
+      since_sync = 0;
+    }
+    tau = t1;
+    S = S1;
+  }
+}
+
+}  // namespace sb::event_detail

@@ -1,0 +1,69 @@
+#pragma once
+// First threshold crossing of one stuck block next to ringing groove segments (quiet phase).
+//
+// Its driving force is F(tau) = a + b tau + sum_k w_k q_k(tau), q_k damped oscillators. The gap
+// g = f_static - |F| is searched for its first root with three tools, cheapest first:
+//  * skips that provably cannot pass a root: g / (bound on |dF|), or the time the affine part
+//    needs to come within the modal envelope of the threshold. Each costs one direct evaluation
+//    (exp / sincos per mode), so it is used only when it skips many grid steps;
+//  * otherwise a uniform grid of step H = kGrid / omega_max advanced by each mode's exact 2x2
+//    transition matrix (a few flops per mode, no transcendental calls). A sign change between
+//    grid points is a bracket. A root that rises and falls back between two grid points (a
+//    grazing touch) is excluded by |F''| <= M2: |F| <= max(|F_a|, |F_b|) + M2 h^2 / 8 on the
+//    interval; where that bound does not exclude it, the interval is subdivided (direct
+//    evaluations) until it does or a point beyond the threshold is found. The subdivision stops
+//    at 2^-kMaxDepth of a grid step: a touch that exceeds the threshold by less than
+//    M2 (H 2^-kMaxDepth)^2 / 8 is below resolution, the same limit as the bisection of the
+//    Dormand-Prince event search (round-off in t);
+//  * bisection of a bracket to round-off in t (direct evaluations).
+// Every mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it), so the bounds
+// taken at one point hold for all later times.
+#include <vector>
+
+#include "springblock/integrate/damped_mode.hpp"
+
+namespace sb::event_detail {
+
+class EdgeMarch {
+ public:
+  // One mode of an adjacent segment: weight in F, the mode, and its flat index in q0 / p0.
+  void add_mode(double w, const DampedMode& mode, int index);
+  // After all modes are added: the grid step from the fastest mode, transition matrices.
+  void finish();
+
+  // a, b: affine part of F at the start of the quiet phase; fs: the threshold.
+  void set_affine(double a, double b) { a_ = a, b_ = b; }
+  double a() const { return a_; }
+
+  // A cheap lower bound on the first crossing (for ordering the searches).
+  double lower_bound(const double* q0, const double* p0, double fs);
+  // First tau in [0, tau_limit] with |F| >= fs, or +inf. t0 only sets the round-off scale.
+  double first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0);
+
+  // Diagnostics of the last searches: direct (transcendental) evaluations and grid steps.
+  long direct_evals = 0, grid_steps = 0;
+
+ private:
+  struct Mode {
+    double w, omega, m2;  // weight, sqrt(omega^2), (omega + gamma) for the |q''| bound
+    DampedMode mode;
+    double p00, p01, p10, p11;  // [q, qd](tau + H) = P [q, qd](tau)
+    int index;
+  };
+  struct Sums {
+    double F, dF, mb, sb, m2;  // F, dF/dtau, bounds on |modal F|, |modal dF|, |F''|
+  };
+  void direct(const double* q0, const double* p0, double tau);  // q_, qd_ at tau
+  void grid_step();                                              // q_, qd_ advanced by H
+  Sums sums(double tau) const;
+  double force(const double* q0, const double* p0, double tau);  // F only, direct
+  bool graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi, double Fhi,
+             double m2, int depth, double& where);
+
+  std::vector<Mode> modes_;
+  std::vector<double> q_, qd_;
+  double a_ = 0, b_ = 0, H_ = 0;
+  int budget_ = 0;  // direct evaluations left for the current grazing search
+};
+
+}  // namespace sb::event_detail
