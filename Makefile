@@ -48,4 +48,4 @@ reproduce-all:
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DSPRINGBLOCK_TIER=$(TIER) \
 	  -DSPRINGBLOCK_REPRO_METHOD=$(METHOD) --log-level=WARNING
 	@cmake --build $(BUILD) -j$(JOBS)
-	@/usr/bin/python3 tools/reproduce_all.py $(BUILD) $(shell cmake --build $(BUILD) --target help 2>/dev/null | grep -oE '^\.\.\. (figures|report)$$' | cut -c5-)
+	@/usr/bin/python3 tools/reproduce_all.py $(BUILD) figures report

@@ -95,6 +95,13 @@ nlohmann::json scene_record(const LabelledScene& ls, const sb::EnsembleResult& r
   return rec;
 }
 
+// Seed of one scene: FNV-1a of its id folded into the run's seed, mixed once more.
+std::uint64_t scene_seed(std::uint64_t seed, const std::string& id) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : id) h = (h ^ c) * 1099511628211ULL;
+  return sb::rep_seed(seed ^ h, 0) >> 1;  // keep it printable as a signed 64-bit integer
+}
+
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
   std::stringstream in(s);
@@ -236,7 +243,10 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
       std::erase_if(scenes, [&](const LabelledScene& s) { return !wanted.count(s.id); });
       if (scenes.empty()) throw sb::InputError("only", "no scene of " + target + " has id in '" + opt.only + "'");
     }
-    for (auto& s : scenes) sb::validate(s.scene);
+    for (auto& s : scenes) {
+      if (!s.shared_seed) s.scene.seed = scene_seed(opt.seed, s.id);
+      sb::validate(s.scene);
+    }
   } catch (const sb::InputError& e) {
     std::fprintf(stderr, "%s: invalid %s: %s\n", target.c_str(), e.field.c_str(), e.what());
     return 2;

@@ -49,6 +49,11 @@ struct LabelledScene {
   std::string id, label;
   nlohmann::json x = nlohmann::json::object();
   sb::Scene scene;
+  // By default every scene gets its own seed, derived from --seed and its id, so different
+  // scenes are statistically independent (as separate runs in the paper are). A driver that
+  // compares variants of one scene sets this to keep --seed for all of them: the variants then
+  // see the same micro coefficients and their differences are paired.
+  bool shared_seed = false;
 };
 
 class Context {

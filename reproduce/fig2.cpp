@@ -6,10 +6,23 @@ follow the same curve for (mu_d)_m/(mu_s)_m >= 0.5 and depart from it only below
 slipping blocks drag their neighbours.
 Scene: smooth surface, N = 200, L_x = 4.0 cm, micro mu_s = 1.0(0.1), micro mu_d = r (0.01) for
 r in {0.1, 0.2, 0.3, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7, 0.8, 0.9} (smoke tier: 0.2, 0.5, 0.8).
-Three data sets: k_int_scale = 0 (decoupled), interacting with damping 10/ms, interacting with
-damping 0. The theory curve uses one block of mass m, spring K_s, velocity v and normal force
+Four data sets: k_int_scale = 0 without damping ("kint0", the ideal case: Eq. 1 behind Eq. 9
+has no damping term), k_int_scale = 0 with the default damping 10/ms ("kint0_damped"),
+interacting with damping 10/ms ("damped") and interacting with damping 0 ("undamped"). The
+caption names the damping only for the interacting sets. We first ran the decoupled set with
+the default damping only: with gamma = 10/ms and omega = sqrt(K_s/m) = 6.5e4 /s the damping
+ratio is 0.08, enough to shorten each slip and raise (mu_d)_M at r = 0.5 from the predicted
+0.504 to 0.55, whereas without damping it gives 0.500. Both are kept so the effect is visible;
+claim C10 is judged on the ideal (undamped) set. The theory curve uses one block of mass m, spring K_s, velocity v and normal force
 F_load/N, evaluated by sb::theory::mu_d_macro_gaussian on a fine grid of r.
-Checked: claims C10 (K_int = 0 within 0.01 of theory), C11 (interacting sets within 0.01 of
+Run length: Eq. 9 is a time average over whole stick-slip cycles of blocks whose phases have
+spread out. All blocks start at rest and are loaded alike, so for the first cycles they move
+nearly in phase and a short window catches only part of a cycle (at r = 0.2 a 2 t0 run averages
+mostly the low-force part of the static phase and gives 0.27 instead of 0.43). A cycle lasts
+about 2 (1 - r) t0 (1.8 t0 at r = 0.1), and the 10 % spread of the micro mu_s detunes the
+cycles by ~10 %, so ~10 cycles are needed to lose the phase: fig2 runs 20 t0 for every data set
+(smoke tier: 6 t0), the same rule for all r and all three sets.
+Checked: claims C10 (ideal K_int = 0 set within 0.01 of theory), C11 (interacting sets within 0.01 of
 theory for r >= 0.5 and outside it somewhere below 0.5), C12 (K_int = 0 never below the micro
 mu_d).
 */
@@ -32,7 +45,8 @@ int main(int argc, char** argv) {
         std::vector<double> rs = {0.1, 0.2, 0.3, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7, 0.8, 0.9};
         if (ctx.tier.reduced) rs = {0.2, 0.5, 0.8};
         struct Set { const char* id; const char* k_int_scale; const char* damping; };
-        const Set sets[] = {{"kint0", "0", "10/ms"}, {"damped", "1", "10/ms"}, {"undamped", "1", "0"}};
+        const Set sets[] = {{"kint0", "0", "0"}, {"kint0_damped", "0", "10/ms"}, {"damped", "1", "10/ms"},
+                           {"undamped", "1", "0"}};
         std::vector<repro::LabelledScene> out;
         for (const auto& set : sets)
           for (double r : rs) {
@@ -40,6 +54,7 @@ int main(int argc, char** argv) {
             s.id = fmt::format("{}_r{:g}", set.id, r);
             s.label = fmt::format("{}, (mu_d)_m/(mu_s)_m = {:g}", set.id, r);
             s.scene = ctx.chain(kN, kLength);
+            repro::set(s.scene, "duration", ctx.tier.reduced ? "6t0" : "20t0");
             repro::set(s.scene, "mu_d", fmt::format("{:g},0.01", r));
             repro::set(s.scene, "k_int_scale", set.k_int_scale);
             repro::set(s.scene, "damping", set.damping);

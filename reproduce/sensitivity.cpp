@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
         for (const auto& s : surfaces)
           for (const auto& v : variants) {
             repro::LabelledScene ls;
+            ls.shared_seed = true;
             ls.scene = ctx.chain(s.N, s.length, s.pattern);
             // The baseline is the paper-length run whatever the tier, so the duration
             // variants bracket it.

@@ -4,7 +4,8 @@
 Each target is a CMake custom target (reproduce_<name>), so an up-to-date JSON is not rebuilt.
 The ETA weights targets by their wall time in the previous run of the same tier (stored in
 <build>/reproduce/timings.json); on a first run every target counts the same.
-Usage: reproduce_all.py BUILD_DIR [extra targets to build at the end, e.g. figures report]
+Usage: reproduce_all.py BUILD_DIR [targets to build at the end if the build defines them,
+       e.g. figures report]
 """
 import json
 import os
@@ -57,8 +58,11 @@ def main():
     json.dump(timings, open(tmp, "w"), indent=1)
     os.replace(tmp, tpath)
     rc = subprocess.call(["cmake", "--build", build, "--target", "reproduce-summary"])
+    defined = subprocess.run(["cmake", "--build", build, "--target", "help"], capture_output=True,
+                             text=True).stdout
     for t in extra:
-        rc = rc or subprocess.call(["cmake", "--build", build, "--target", t])
+        if f"... {t}\n" in defined or f" {t}:" in defined:
+            rc = rc or subprocess.call(["cmake", "--build", build, "--target", t])
     print(f"\nreproduce-all: finished in {fmt(time.time() - t0)} (tier {tier}); "
           f"summary in {os.path.join(rdir, 'summary.tsv')}")
     return rc

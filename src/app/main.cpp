@@ -89,6 +89,12 @@ int cmd_run(const FieldOptions& fields, CLI::App* app, const std::string& scene_
                  result.finished_reps, scene.reps);
     return 130;
   }
+  if (result.mu_s.n < scene.reps)
+    std::fprintf(stderr,
+                 "springblock: warning: %d of %d repetitions showed no macroscopic slip (mu(t) never fell "
+                 "%g below its running maximum before the end); their mu_s and mu_d are undefined (null). "
+                 "Lengthen --duration or lower --peak-drop.\n",
+                 scene.reps - result.mu_s.n, scene.reps, scene.rules.peak_drop);
   auto j = sb::ensemble_json(scene, result, command_line);
   if (!out_path.empty()) sb::write_file_atomic(out_path, j.dump(2) + "\n");
   if (!series_path.empty()) sb::write_file_atomic(series_path, sb::series_tsv(scene, result, command_line));

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <exception>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -99,12 +100,21 @@ EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interru
 
   const int threads = scene.threads > 0 ? scene.threads : omp_get_max_threads();
   out.threads = std::min(threads, scene.reps);
+  // An exception may not leave an OpenMP region (that is std::terminate): record it, let the
+  // other threads skip their remaining repetitions, and rethrow the lowest-index one afterwards.
+  std::vector<std::exception_ptr> errors(scene.reps);
+  std::atomic<bool> failed{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(out.threads)
   for (int rep = 0; rep < scene.reps; ++rep) {
-    if (interrupt && interrupt->load()) continue;
-    out.runs[rep] = run_repetition(scene, rep, interrupt, &progress_ns[rep]);
-    // A repetition cut short by an interrupt is not a result.
-    finished[rep] = !(interrupt && interrupt->load());
+    if ((interrupt && interrupt->load()) || failed.load()) continue;
+    try {
+      out.runs[rep] = run_repetition(scene, rep, interrupt, &progress_ns[rep]);
+      // A repetition cut short by an interrupt is not a result.
+      finished[rep] = !(interrupt && interrupt->load());
+    } catch (...) {
+      errors[rep] = std::current_exception();
+      failed.store(true);
+    }
   }
   {
     std::lock_guard lock(mu);
@@ -113,6 +123,8 @@ EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interru
   cv.notify_all();
   if (reporter.joinable()) reporter.join();
 
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
   for (char f : finished) out.finished_reps += f;
   out.interrupted = out.finished_reps < scene.reps;
   std::vector<double> ms, md, mds, tp;

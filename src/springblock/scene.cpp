@@ -201,7 +201,12 @@ Chain build_chain(const Scene& s, int rep) {
     if (!c.contact[i]) ms = md = 0.0;
     c.mu_s[i] = ms;
     c.mu_d[i] = md;
-    c.f_static[i] = ms * c.F_n;
+    // A kept pair with mu_d > mu_s cannot start to slide at mu_s F_n: once moving, kinetic
+    // friction exceeds the pull and drives it back to rest, and at rest static friction cannot
+    // hold it, so both sides push it onto v = 0 (a Filippov sliding mode). It therefore holds
+    // until the pull reaches mu_d F_n: its effective static threshold is max(mu_s, mu_d) F_n.
+    // RK4 reproduces this by chattering; stating it here gives every integrator the same law.
+    c.f_static[i] = std::max(ms, md) * c.F_n;
     c.f_kinetic[i] = md * c.F_n;
   }
   return c;

@@ -127,3 +127,8 @@ inline void expect_invariants(const CaseResult& r, const sb::Chain& c) {
 }
 
 }  // namespace sbtest
+
+namespace sb {
+// Readable parameter names in CTest ("... /rk4  # GetParam() = rk4").
+inline void PrintTo(Method m, std::ostream* os) { *os << method_name(m); }
+}  // namespace sb

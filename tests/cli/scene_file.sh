@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Scene files go through the same validation as options: an unknown key, a bad value and a
+# malformed file are refused with exit 2 naming the key. Usage: scene_file.sh SPRINGBLOCK PYTHON
+set -u
+sb=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fail=0
+
+check() {  # check FILE_CONTENT EXPECTED_FIELD PATTERN
+  printf '%s' "$1" >"$dir/scene.json"
+  local err rc
+  err=$("$sb" run --scene "$dir/scene.json" --reps 1 2>&1 >/dev/null)
+  rc=$?
+  [ "$rc" -eq 2 ] || { echo "FAIL [$1]: exit $rc, expected 2: $err"; fail=1; return; }
+  grep -qF -- "invalid $2" <<<"$err" || { echo "FAIL [$1]: message does not name '$2': $err"; fail=1; }
+  grep -qF -- "$3" <<<"$err" || { echo "FAIL [$1]: message lacks '$3': $err"; fail=1; }
+}
+
+check '{"N": 50, "colour": "red"}' colour "unknown scene field"
+check '{"N": 50, "velocity": "-3cm/s"}' velocity "outside the allowed range"
+check '{"N": 50, "length": "4 parsecs"}' length "unknown unit"
+check '{"N": 0}' N "outside [1, 1000000]"
+check '{"N": 50, "pattern": "periodic:60,1"}' pattern "exceeds the number of blocks"
+check '{"N": 50, "damping": [1, 2]}' damping "string, number or boolean"
+check '[1, 2, 3]' scene "one JSON object"
+check '{"N": 50,' scene "not valid JSON"
+
+# A good scene file runs.
+printf '{"N": 20, "reps": 1, "duration": "0.5t0", "pattern": "periodic:2,1"}' >"$dir/ok.json"
+"$sb" run --scene "$dir/ok.json" --json >/dev/null 2>&1 || { echo "FAIL a valid scene file was refused"; fail=1; }
+
+[ $fail -eq 0 ] && echo "scene files validated"
+exit $fail
