@@ -53,7 +53,25 @@ def ensemble_table(path):
               f"{c['steps_spanned']:.0f} spanned: the quiet jump saves x{c['jump_ratio']:.1f} steps")
 
 
+def methods_table(path):
+    """RK4 against the event method on the same scene and seed, wall time ratio side by side."""
+    # Fixed-iteration benchmarks carry "/iterations:1" in their run name.
+    rows = {name.split("/iterations:")[0]: c for name, c in medians(path).items()}
+    print("\nOne repetition, 1 t0, N = 360, seed 3 (median wall time)")
+    scenes = sorted({name.split("/")[1] for name in rows})
+    for sc in scenes:
+        rk4, ev = rows.get(f"method/{sc}/rk4"), rows.get(f"method/{sc}/event")
+        if not rk4 or not ev:
+            print(f"{sc}: missing a method (rk4: {bool(rk4)}, event: {bool(ev)})")
+            continue
+        print(f"{sc:22s} rk4 {rk4['real_time']:8.2f} s   event {ev['real_time']:7.2f} s   "
+              f"ratio x{rk4['real_time'] / ev['real_time']:.0f}   rhs evals {rk4['rhs_evals']:.3g} / "
+              f"{ev['rhs_evals']:.3g}   mu_s {rk4['mu_s']:.5f} / {ev['mu_s']:.5f}")
+
+
 if __name__ == "__main__":
     kernel_table(sys.argv[1])
     if len(sys.argv) > 2:
         ensemble_table(sys.argv[2])
+    if len(sys.argv) > 3:
+        methods_table(sys.argv[3])

@@ -91,10 +91,12 @@ int cmd_run(const FieldOptions& fields, CLI::App* app, const std::string& scene_
   }
   if (result.mu_s.n < scene.reps)
     std::fprintf(stderr,
-                 "springblock: warning: %d of %d repetitions showed no macroscopic slip (mu(t) never fell "
-                 "%g below its running maximum before the end); their mu_s and mu_d are undefined (null). "
-                 "Lengthen --duration or lower --peak-drop.\n",
-                 scene.reps - result.mu_s.n, scene.reps, scene.rules.peak_drop);
+                 "springblock: warning: %d of %d repetitions never ended their loading phase (%s) before "
+                 "the end of the run; their mu_s and mu_d are undefined (null). Lengthen --duration.\n",
+                 scene.reps - result.mu_s.n, scene.reps,
+                 scene.rules.peak_rule == sb::ExtractionRules::PeakRule::AllSlipped
+                     ? "not every contact block slid"
+                     : "mu(t) never fell peak_drop below its running maximum");
   auto j = sb::ensemble_json(scene, result, command_line);
   if (!out_path.empty()) sb::write_file_atomic(out_path, j.dump(2) + "\n");
   if (!series_path.empty()) sb::write_file_atomic(series_path, sb::series_tsv(scene, result, command_line));

@@ -40,6 +40,7 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
   const auto d = scene.derived();
   FrictionObserverConfig cfg;
   cfg.F_load = chain.F_load;
+  cfg.peak_rule = scene.rules.peak_rule;
   cfg.peak_drop = scene.rules.peak_drop;
   cfg.mu_d_skip_s = scene.rules.mu_d_skip_t0 * scene.t0_s();
   cfg.block_area_P = d.l_x_m * scene.material.l_y_m * scene.material.P_Pa;

@@ -226,6 +226,7 @@ void to_json(nlohmann::json& j, const Scene& s) {
                      {"t0_s", s.t0_s()},
                      {"sample_dt_s", s.run.sample_dt_s},
                      {"stop_after_mu_s", s.run.stop_after_mu_s},
+                     {"peak_rule", s.rules.peak_rule == ExtractionRules::PeakRule::AllSlipped ? "all_slipped" : "drop"},
                      {"peak_drop", s.rules.peak_drop},
                      {"mu_d_skip_t0", s.rules.mu_d_skip_t0},
                      {"reps", s.reps},

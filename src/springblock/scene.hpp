@@ -20,8 +20,13 @@ Method parse_method(const std::string& text);  // throws InputError("method")
 
 // How the macroscopic coefficients are read off mu(t). See paper/choices.md.
 struct ExtractionRules {
-  // First macroscopic slip: mu(t) falls this far (in units of mu) below its running maximum.
-  // mu_s is that running maximum. Precursor slips at groove edges drop mu by far less.
+  // Where the loading phase ends; mu_s is the largest mu(t) reached before that moment.
+  //  AllSlipped (default): when every contact block has slid at least once, i.e. the whole
+  //    surface has moved. Precursor slips of a few blocks, however large their mu drop on a
+  //    surface with few contacts, do not end it.
+  //  Drop: when mu(t) first falls `peak_drop` below its running maximum. Simple, but on
+  //    surfaces with few contact blocks a precursor of 2-5 blocks already drops mu by 0.05.
+  enum class PeakRule { AllSlipped, Drop } peak_rule = PeakRule::AllSlipped;
   double peak_drop = 0.05;
   // mu_d averages mu(t) from (first macroscopic slip + skip) to the end of the run,
   // skip in units of the loading time t0 (see RunControl).

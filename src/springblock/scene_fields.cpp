@@ -120,7 +120,13 @@ const std::vector<Entry>& entries() {
        }},
       {{"sample_dt", "spacing of mu(t) samples (default 1e-2ms)", "1e-2ms"},
        [](Scene& s, auto& k, auto& v) { s.run.sample_dt_s = parse_quantity(v, Dimension::Time, k); }},
-      {{"peak_drop", "first macroscopic slip: mu drops this far below its running max (default 0.05)", "0.05"},
+      {{"peak_rule", "end of the loading phase for mu_s: all_slipped (every contact block has slid once, default) or drop", "all_slipped"},
+       [](Scene& s, auto& k, auto& v) {
+         if (v == "all_slipped") s.rules.peak_rule = ExtractionRules::PeakRule::AllSlipped;
+         else if (v == "drop") s.rules.peak_rule = ExtractionRules::PeakRule::Drop;
+         else throw InputError(k, "'" + v + "' is not one of: all_slipped, drop");
+       }},
+      {{"peak_drop", "with --peak-rule drop: mu falling this far below its running max ends loading (default 0.05)", "0.05"},
        [](Scene& s, auto& k, auto& v) { s.rules.peak_drop = number(k, v); }},
       {{"mu_d_skip", "mu_d window starts this many t0 after the first slip (default 0.25)", "0.25"},
        [](Scene& s, auto& k, auto& v) { s.rules.mu_d_skip_t0 = number(k, v); }},

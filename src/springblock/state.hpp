@@ -18,6 +18,16 @@ struct State {
   std::int64_t steps = 0;        // accepted steps
   std::int64_t rhs_evals = 0;    // force evaluations of the whole chain (work measure)
   std::int64_t switches = 0;     // stick<->slip transitions
+  std::vector<std::uint8_t> slipped_once;  // 1 once a contact block has started to slide
+  int n_slipped_once = 0;                  // how many contact blocks have slid at least once
+
+  // Called by integrators whenever block i starts to slide.
+  void mark_slip(int i) {
+    if (!slipped_once[i]) {
+      slipped_once[i] = 1;
+      ++n_slipped_once;
+    }
+  }
 
   // Initial condition (a choice the paper leaves open): every block at rest at its rest
   // position, the slider spring unstretched, all contact blocks stuck.
@@ -26,6 +36,7 @@ struct State {
     s.u.assign(c.N, 0.0);
     s.v.assign(c.N, 0.0);
     s.dir.assign(c.N, 0);
+    s.slipped_once.assign(c.N, 0);
     return s;
   }
   bool stuck(const Chain& c, int i) const { return c.contact[i] && dir[i] == 0; }

@@ -1,5 +1,7 @@
-// The first-peak rule on synthetic mu(t) histories: precursor dips smaller than peak_drop do
-// not end the loading phase; the first larger drop does, and mu_s is the peak before it.
+// The first-peak rules on synthetic mu(t) histories. Drop rule: dips smaller than peak_drop do
+// not end the loading phase; the first larger drop does. All-slipped rule (the default): only the
+// moment every contact block has slid once ends it, however large a precursor's dip. Either way
+// mu_s is the peak reached before the end of loading.
 #include <gtest/gtest.h>
 
 #include "springblock/observe/friction_observer.hpp"
@@ -26,6 +28,17 @@ struct Scripted {
     c.n_contact = 1;
     s = State::at_rest(c);
   }
+  // Two contact blocks whose friction is scripted: block 0 carries mu, block 1 none.
+  void make_two_blocks() {
+    c.N = 2;
+    c.contact = {1, 1};
+    c.f_static = {10, 10};
+    c.f_kinetic = {0.5, 0.5};
+    c.mu_s = {10, 10};
+    c.mu_d = {0.5, 0.5};
+    c.n_contact = 2;
+    s = State::at_rest(c);
+  }
   void feed(FrictionObserver& obs, double t, double mu) {
     s.t = t;
     s.u[0] = -mu;  // friction = K_s (0 - u) = mu
@@ -37,6 +50,7 @@ struct Scripted {
 TEST(FirstPeak, PrecursorDipsDoNotCount) {
   Scripted sc;
   FrictionObserverConfig cfg;
+  cfg.peak_rule = ExtractionRules::PeakRule::Drop;
   cfg.peak_drop = 0.05;
   FrictionObserver obs(cfg);
   double t = 0;
@@ -54,6 +68,7 @@ TEST(FirstPeak, PrecursorDipsDoNotCount) {
 TEST(FirstPeak, MuDAveragesOnlyTheWindowAfterTheSlip) {
   Scripted sc;
   FrictionObserverConfig cfg;
+  cfg.peak_rule = ExtractionRules::PeakRule::Drop;
   cfg.peak_drop = 0.05;
   cfg.mu_d_skip_s = 10;
   FrictionObserver obs(cfg);
@@ -64,6 +79,26 @@ TEST(FirstPeak, MuDAveragesOnlyTheWindowAfterTheSlip) {
   for (int k = 12; k < 22; ++k) sc.feed(obs, k, 0.6);  // window
   EXPECT_DOUBLE_EQ(obs.mu_d(), 0.6);
   EXPECT_EQ(obs.window_samples(), 10);
+}
+
+TEST(FirstPeak, AllSlippedRuleIgnoresLargePrecursorDips) {
+  Scripted sc;
+  sc.make_two_blocks();
+  FrictionObserver obs(FrictionObserverConfig{});  // default rule: all contact blocks slipped
+  double t = 0;
+  for (double mu = 0; mu < 0.5; mu += 0.01) sc.feed(obs, t += 1, mu);
+  sc.s.mark_slip(0);            // a precursor: one of two blocks slides...
+  sc.feed(obs, t += 1, 0.30);   // ...and mu dips by 0.2, far more than any drop threshold
+  EXPECT_FALSE(obs.slipped());
+  for (double mu = 0.30; mu < 0.70; mu += 0.01) sc.feed(obs, t += 1, mu);
+  const double peak = obs.max_mu();
+  sc.s.mark_slip(1);            // now the whole surface has moved
+  sc.feed(obs, t += 1, 0.45);
+  EXPECT_TRUE(obs.slipped());
+  EXPECT_DOUBLE_EQ(obs.mu_s(), peak);
+  EXPECT_GT(obs.mu_s(), 0.69);
+  sc.s.mark_slip(1);            // marking twice does not count twice
+  EXPECT_EQ(sc.s.n_slipped_once, 2);
 }
 
 TEST(FirstPeak, NoSlipMeansUndefinedCoefficients) {

@@ -102,6 +102,7 @@ int apply_switches(const Chain& c, State& s, Workspace& w) {
       if (std::fabs(F) > c.f_static[i]) {
         const std::int8_t d = F > 0 ? 1 : -1;
         s.dir[i] = d;
+        s.mark_slip(i);
         w.mobile[i] = 1.0;
         w.f_kin[i] = d * c.f_kinetic[i];
         ++s.switches;

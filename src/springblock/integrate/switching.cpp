@@ -46,6 +46,7 @@ int Switching::settle(const Chain& c, State& s) {
         // The located crossing is the switch, even if round-off left |F| a hair below f_static.
         const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
         s.dir[i] = F >= 0 ? 1 : -1;
+        s.mark_slip(i);
         ++made;
         changed = true;
         continue;
@@ -54,6 +55,7 @@ int Switching::settle(const Chain& c, State& s) {
         const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
         if (std::fabs(F) > c.f_static[i]) {
           s.dir[i] = F > 0 ? 1 : -1;
+          s.mark_slip(i);
           ++made;
           changed = true;
         }

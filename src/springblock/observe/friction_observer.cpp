@@ -22,8 +22,12 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
     if (mu > running_max_) {
       running_max_ = mu;
       t_max_ = s.t;
-    } else if (mu < running_max_ - cfg_.peak_drop) {
-      // First macroscopic slip: mu_s is the peak reached before it.
+    }
+    // End of the loading phase: mu_s is the peak reached before it.
+    const bool ended = cfg_.peak_rule == ExtractionRules::PeakRule::AllSlipped
+                           ? !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact
+                           : mu < running_max_ - cfg_.peak_drop;
+    if (ended) {
       slipped_ = true;
       t_slip_ = s.t;
     }

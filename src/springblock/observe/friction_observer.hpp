@@ -28,7 +28,8 @@ struct StressSnapshot {
 
 struct FrictionObserverConfig {
   double F_load = 1;
-  double peak_drop = 0.05;        // mu below running max by this much = first macroscopic slip
+  ExtractionRules::PeakRule peak_rule = ExtractionRules::PeakRule::AllSlipped;
+  double peak_drop = 0.05;        // Drop rule: mu below running max by this much ends loading
   double mu_d_skip_s = 0;         // start of the mu_d window after the first slip
   double block_area_P = 1;        // l_x l_y P, for sigma/P
   bool keep_series = false;
