@@ -86,12 +86,8 @@ def narrative(target):
     return parts
 
 
-def fnum(v):
-    try:
-        x = float(v)
-        return x if math.isfinite(x) else math.nan
-    except (TypeError, ValueError):
-        return math.nan
+# One tolerant number parser for the report and the tables it embeds.
+fnum = render_tables.fnum
 
 
 def f3(x, d=3):
