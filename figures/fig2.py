@@ -11,7 +11,9 @@ def case(s):
     kis = style.dig(s, "result.scene.k_int_scale", 1.0)
     gamma = style.dig(s, "result.scene.material.gamma_per_s", None)
     if kis == 0:
-        return r"$K_{int}=0$"
+        # Two K_int = 0 sets: only the undamped one is the setting of eq. (9); damping changes
+        # the single-block cycle, so the damped set is kept apart rather than merged.
+        return r"$K_{int}=0$, $\gamma=0$" if gamma == 0 else r"$K_{int}=0$, damped"
     return r"coupled, $\gamma=0$" if gamma == 0 else r"coupled, damped"
 
 
@@ -20,7 +22,7 @@ def ratio(s):
     return r if r is not None else style.dig(s, "x.mu_ratio")
 
 
-COLOUR = {r"$K_{int}=0$": "#000000", r"coupled, damped": "#E69F00", r"coupled, $\gamma=0$": "#0072B2"}
+COLOUR = {r"$K_{int}=0$, $\gamma=0$": "#000000", r"$K_{int}=0$, damped": "#999999", r"coupled, damped": "#E69F00", r"coupled, $\gamma=0$": "#0072B2"}
 
 a = style.arguments(__doc__)
 doc = style.load_target(a.data, "fig2")

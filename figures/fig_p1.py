@@ -22,6 +22,8 @@ def regular_groove(pattern):
     """n_g of a pattern with equal pawls and grooves (periodic:n,n or one-level
     hierarchical:n at N=360, which is the same surface), else None."""
     kind, _, args = str(pattern).partition(":")
+    if kind not in ("periodic", "hierarchical"):
+        return None  # smooth and random surfaces have no regular groove size
     nums = [int(v) for v in args.split(",") if v]
     if kind == "periodic" and len(nums) == 2 and nums[0] == nums[1]:
         return nums[1]
