@@ -5,8 +5,9 @@ move our numbers, so a disagreement with a published value can be told apart fro
 Scene: three representative surfaces with default parameters: smooth N = 360, L_x = 7.2 cm
 (pat0_r01); periodic:10,10 at the same size (pat0_r06); hierarchical:24,8,1 at N = 120,
 L_x = 2.4 cm (pat1_r08). Smoke tier: the smooth scene only. For each surface, variants of one
-choice at a time around the baseline (peak_drop 0.05, mu_d_skip 0.25 t0, duration 4 t0, the
-method's default accuracy): peak_drop 0.02 and 0.1; mu_d_skip 0 and 0.5 t0; duration 3 t0 and
+choice at a time around the baseline (mu_s rule all_slipped, mu_d_skip 0.25 t0, duration 4 t0,
+the method's default accuracy): the drop rule for mu_s at thresholds 0.05, 0.02 and 0.1;
+mu_d_skip 0 and 0.5 t0; duration 3 t0 and
 6 t0; and the integrator accuracy tightened (rk4: dt 5e-8 s instead of 1e-7 s; event: tol 1e-11
 instead of 1e-9). Every variant uses the same seed, so the repetitions see the same micro
 coefficients and the differences to the baseline are paired, free of draw-to-draw noise.
@@ -32,7 +33,10 @@ int main(int argc, char** argv) {
         const bool rk4 = ctx.method == sb::Method::RK4;
         const std::vector<Variant> variants = {
             {"baseline", "", ""},
-            {"peak_drop", "peak_drop", "0.02"}, {"peak_drop", "peak_drop", "0.1"},
+            // The loading-phase rule for mu_s: the default (all contact blocks slid once)
+            // against the drop rule at three thresholds.
+            {"peak_rule", "peak_rule", "drop"}, {"peak_rule", "peak_rule", "drop:0.02"},
+            {"peak_rule", "peak_rule", "drop:0.1"},
             {"mu_d_skip", "mu_d_skip", "0"}, {"mu_d_skip", "mu_d_skip", "0.5"},
             {"duration", "duration", "3t0"}, {"duration", "duration", "6t0"},
             {"accuracy", rk4 ? "dt" : "tol", rk4 ? "5e-8s" : "1e-11"}};
@@ -45,7 +49,12 @@ int main(int argc, char** argv) {
             // The baseline is the paper-length run whatever the tier, so the duration
             // variants bracket it.
             repro::set(ls.scene, "duration", "4t0");
-            if (*v.key) repro::set(ls.scene, v.key, v.value);
+            if (*v.key) {
+              // "drop:X" selects the drop rule with threshold X.
+              const auto colon = v.value.find(':');
+              repro::set(ls.scene, v.key, v.value.substr(0, colon));
+              if (colon != std::string::npos) repro::set(ls.scene, "peak_drop", v.value.substr(colon + 1));
+            }
             ls.id = *v.key ? fmt::format("{}__{}={}", s.id, v.key, v.value) : fmt::format("{}__baseline", s.id);
             ls.label = fmt::format("{} ({}), {}", s.pattern, s.row, *v.key ? fmt::format("{} = {}", v.key, v.value) : "baseline");
             ls.x = {{"surface", s.id}, {"row", s.row}, {"choice", v.choice}, {"key", v.key}, {"value", v.value}};
