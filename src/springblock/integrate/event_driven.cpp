@@ -8,7 +8,6 @@
 #include "springblock/integrate/event_search.hpp"
 #include "springblock/integrate/quiet_phase.hpp"
 #include "springblock/integrate/switching.hpp"
-#include "springblock/observe/friction_observer.hpp"
 
 namespace sb {
 namespace {
@@ -46,10 +45,9 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     quiet->set_sample_dt(sample_dt);
   }
   State sample = s;  // buffer for samples served from the exact quiet-phase solution
-  // The friction observer reads only the contact blocks' forces, i.e. the positions of their
-  // groove neighbours: quiet-phase samples for it need only the segments' end rows (O(N) per
-  // sample instead of O(sum n^2) for long grooves). Any other observer gets the full state.
-  const bool ends_only = dynamic_cast<const FrictionObserver*>(&obs) != nullptr;
+  // An observer that reads only contact blocks' forces needs the groove segments' end rows at
+  // quiet-phase samples (O(N) per sample instead of O(sum n^2) for long grooves).
+  const bool ends_only = !obs.reads_groove_interiors();
 
   sw.sync(c, s);
   sw.settle(c, s);

@@ -44,6 +44,9 @@ class FrictionObserver final : public Observer {
   explicit FrictionObserver(FrictionObserverConfig cfg) : cfg_(std::move(cfg)) {}
   void sample(const Chain& chain, const State& state) override;
   bool wants_stop() const override;
+  // mu(t) and stress snapshots need only contact blocks' forces (their own and their direct
+  // neighbours' positions); groove interiors are never read.
+  bool reads_groove_interiors() const override { return false; }
 
   // Results.
   bool slipped() const { return slipped_; }

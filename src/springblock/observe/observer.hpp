@@ -13,6 +13,10 @@ class Observer {
   virtual void sample(const Chain& chain, const State& state) = 0;
   // An observer may end the run early (mu_s-only scenes, interruption).
   virtual bool wants_stop() const { return false; }
+  // Whether samples must carry exact positions of groove blocks that have no contact
+  // neighbour. An observer that reads only contact blocks' forces says no, and an integrator
+  // with an exact groove solution may then skip evaluating those interiors at samples.
+  virtual bool reads_groove_interiors() const { return true; }
 };
 
 }  // namespace sb
