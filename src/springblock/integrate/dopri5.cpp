@@ -10,6 +10,8 @@ Dopri5::Dopri5(int N) : N_(N), store_(14 * static_cast<std::size_t>(N)), ut_(N),
   for (int s = 0; s < 14; ++s) k_[s] = store_.data() + static_cast<std::size_t>(s) * N;
 }
 
+void Dopri5::set_frozen(const double* u) { std::copy(u, u + N_, ut_.begin()); }
+
 void Dopri5::accept_fsal() {
   std::swap(k_[0], k_[6]);
   std::swap(k_[7], k_[13]);
@@ -27,23 +29,36 @@ double Dopri5::dense(const double* y0, const double* y1, int b, int i, double th
   return y0[i] + th * (dy + s * (r3 + th * (r4 + s * r5)));
 }
 
-double Dopri5::error_norm(const double* u, const double* v, const double* mobile, double atol_u,
-                          double atol_v, double rtol) const {
+namespace {
+// Largest weighted error of the u and v components over [lo, hi); restrict-qualified and
+// branch-free (stuck blocks weighted by mobile = 0) so it vectorises.
+double span_error(int lo, int hi, double h, const double* __restrict k0, const double* __restrict k2,
+                  const double* __restrict k3, const double* __restrict k4, const double* __restrict k5,
+                  const double* __restrict k6, const double* __restrict y0, const double* __restrict y1,
+                  const double* __restrict mobile, double atol, double rtol) {
   using T = Dp5Tableau;
-  double const* const* K = k_;
+  double worst = 0;
+  for (int i = lo; i < hi; ++i) {
+    const double e = h * (T::e1 * k0[i] + T::e3 * k2[i] + T::e4 * k3[i] + T::e5 * k4[i] + T::e6 * k5[i] +
+                          T::e7 * k6[i]);
+    const double sc = atol + rtol * std::max(std::fabs(y0[i]), std::fabs(y1[i]));
+    const double r = mobile[i] * std::fabs(e) / sc;
+    worst = worst > r ? worst : r;
+  }
+  return worst;
+}
+}  // namespace
+
+double Dopri5::error_norm(const std::vector<Span>& spans, const double* u, const double* v,
+                          const double* mobile, double atol_u, double atol_v, double rtol) const {
   // Max norm over the moving components: stuck blocks carry no error, and an RMS over the
   // whole chain would dilute the error of the one block that slides.
-  // Branch-free (stuck blocks weighted by mobile = 0) so the loop vectorises.
   double worst = 0;
-  for (int i = 0; i < N_; ++i) {
-    const double eu = h_ * (T::e1 * K[0][i] + T::e3 * K[2][i] + T::e4 * K[3][i] + T::e5 * K[4][i] +
-                            T::e6 * K[5][i] + T::e7 * K[6][i]);
-    const double ev = h_ * (T::e1 * K[7][i] + T::e3 * K[9][i] + T::e4 * K[10][i] + T::e5 * K[11][i] +
-                            T::e6 * K[12][i] + T::e7 * K[13][i]);
-    const double su = atol_u + rtol * std::max(std::fabs(u[i]), std::fabs(u1_[i]));
-    const double sv = atol_v + rtol * std::max(std::fabs(v[i]), std::fabs(v1_[i]));
-    const double e = mobile[i] * std::max(std::fabs(eu) / su, std::fabs(ev) / sv);
-    worst = worst > e ? worst : e;
+  for (const Span& sp : spans) {
+    worst = std::max(worst, span_error(sp.lo, sp.hi, h_, k_[0], k_[2], k_[3], k_[4], k_[5], k_[6], u,
+                                       u1_.data(), mobile, atol_u, rtol));
+    worst = std::max(worst, span_error(sp.lo, sp.hi, h_, k_[7], k_[9], k_[10], k_[11], k_[12], k_[13], v,
+                                       v1_.data(), mobile, atol_v, rtol));
   }
   return worst;
 }

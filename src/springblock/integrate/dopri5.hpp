@@ -3,9 +3,14 @@
 // FSAL (the last stage of an accepted step is the first of the next), a max-norm error estimate
 // against atol + rtol |y|, and the pair's 4th-order continuous extension for locating events
 // inside a step. The contact phase is frozen during a step: the caller owns the switching.
-// No allocation after construction.
+// Only the blocks in the given spans are stepped (the others are stuck or solved exactly
+// elsewhere, see active_set.hpp); the blocks bordering a span must hold their constant
+// positions in u and in the trial array, which set_frozen() copies. No allocation after
+// construction.
+#include <algorithm>
 #include <vector>
 
+#include "springblock/integrate/active_set.hpp"
 #include "springblock/integrate/chain_accel.hpp"
 #include "springblock/model.hpp"
 
@@ -36,16 +41,20 @@ class Dopri5 {
  public:
   explicit Dopri5(int N);
 
+  // Copy the current positions into the trial array, so that blocks outside the spans (stuck
+  // ones in particular) read as constant to the stages. Call after every switch.
+  void set_frozen(const double* u);
+
   // Stage 1 at (u, v, t). Needed at the start and after every switch (the right-hand side jumps).
   template <bool Coupled, bool Damped>
-  void first_stage(const Chain& c, const double* u, const double* v, double t, const double* mobile,
-                   const double* f_kin);
+  void first_stage(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v, double t,
+                   const double* mobile, const double* f_kin);
 
   // One trial step of size h from (u, v, t) whose stage 1 is current. Leaves the 5th-order
   // solution in u1(), v1() and returns the error in units of the tolerance (accept if <= 1).
   template <bool Coupled, bool Damped>
-  double attempt(const Chain& c, const double* u, const double* v, double t, double h,
-                 const double* mobile, const double* f_kin, double atol_u, double atol_v, double rtol);
+  double attempt(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v, double t,
+                 double h, const double* mobile, const double* f_kin, double atol_u, double atol_v, double rtol);
 
   // After accepting: stage 7 becomes the next step's stage 1 (FSAL).
   void accept_fsal();
@@ -61,8 +70,8 @@ class Dopri5 {
 
  private:
   double dense(const double* y0, const double* y1, int k_base, int i, double theta) const;
-  double error_norm(const double* u, const double* v, const double* mobile, double atol_u, double atol_v,
-                    double rtol) const;
+  double error_norm(const std::vector<Span>& spans, const double* u, const double* v, const double* mobile,
+                    double atol_u, double atol_v, double rtol) const;
 
   int N_;
   std::vector<double> store_;  // 14 stage arrays: k_[0..6] = u' stages (velocities), k_[7..13] = v' (accelerations)
@@ -74,68 +83,96 @@ class Dopri5 {
 };
 
 template <bool Coupled, bool Damped>
-void Dopri5::first_stage(const Chain& c, const double* u, const double* v, double t, const double* mobile,
-                         const double* f_kin) {
-  for (int i = 0; i < N_; ++i) k_[0][i] = v[i];
-  chain_accel<Coupled, Damped>(c, u, v, t, mobile, f_kin, k_[7]);
+void Dopri5::first_stage(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v,
+                         double t, const double* mobile, const double* f_kin) {
+  for (const Span& sp : spans) {
+    for (int i = sp.lo; i < sp.hi; ++i) k_[0][i] = v[i];
+    chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, u, v, t, mobile, f_kin, k_[7]);
+  }
+}
+
+// Stage combinations out = y + h (w1 k1 + ...), one function per number of terms with
+// restrict-qualified parameters so GCC vectorises them (through lambdas over an array of stage
+// pointers it did not: the loops compiled to scalar code).
+inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+                 const double* __restrict k1) {
+  for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i]);
+}
+inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+                 const double* __restrict k1, double w2, const double* __restrict k2) {
+  for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i]);
+}
+inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+                 const double* __restrict k1, double w2, const double* __restrict k2, double w3,
+                 const double* __restrict k3) {
+  for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i] + w3 * k3[i]);
+}
+inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+                 const double* __restrict k1, double w2, const double* __restrict k2, double w3,
+                 const double* __restrict k3, double w4, const double* __restrict k4) {
+  for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i] + w3 * k3[i] + w4 * k4[i]);
+}
+inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+                 const double* __restrict k1, double w2, const double* __restrict k2, double w3,
+                 const double* __restrict k3, double w4, const double* __restrict k4, double w5,
+                 const double* __restrict k5) {
+  for (int i = lo; i < hi; ++i)
+    out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i] + w3 * k3[i] + w4 * k4[i] + w5 * k5[i]);
 }
 
 template <bool Coupled, bool Damped>
-double Dopri5::attempt(const Chain& c, const double* u, const double* v, double t, double h,
-                       const double* mobile, const double* f_kin, double atol_u, double atol_v, double rtol) {
+double Dopri5::attempt(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v,
+                       double t, double h, const double* mobile, const double* f_kin, double atol_u,
+                       double atol_v, double rtol) {
   using T = Dp5Tableau;
-  const int N = N_;
-  double* __restrict ut = ut_.data();
-  double* __restrict vt = vt_.data();
-  double** K = k_;  // K[s] velocity stage s, K[7+s] acceleration stage s
+  double* ut = ut_.data();
+  double* vt = vt_.data();
+  double* u1 = u1_.data();
+  double* v1 = v1_.data();
+  double* const* K = k_;  // K[s] velocity stage s (= the trial v), K[7+s] acceleration stage s
   auto stage = [&](int s, double cs) {
-    for (int i = 0; i < N; ++i) K[s][i] = vt[i];
-    chain_accel<Coupled, Damped>(c, ut, vt, t + cs * h, mobile, f_kin, K[7 + s]);
+    for (const Span& sp : spans) {
+      std::copy(vt + sp.lo, vt + sp.hi, K[s] + sp.lo);
+      chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, ut, vt, t + cs * h, mobile, f_kin, K[7 + s]);
+    }
   };
-  for (int i = 0; i < N; ++i) {
-    ut[i] = u[i] + h * T::a21 * K[0][i];
-    vt[i] = v[i] + h * T::a21 * K[7][i];
+  for (const Span& sp : spans) {
+    comb(sp.lo, sp.hi, ut, u, h, T::a21, K[0]);
+    comb(sp.lo, sp.hi, vt, v, h, T::a21, K[7]);
   }
   stage(1, T::c2);
-  for (int i = 0; i < N; ++i) {
-    ut[i] = u[i] + h * (T::a31 * K[0][i] + T::a32 * K[1][i]);
-    vt[i] = v[i] + h * (T::a31 * K[7][i] + T::a32 * K[8][i]);
+  for (const Span& sp : spans) {
+    comb(sp.lo, sp.hi, ut, u, h, T::a31, K[0], T::a32, K[1]);
+    comb(sp.lo, sp.hi, vt, v, h, T::a31, K[7], T::a32, K[8]);
   }
   stage(2, T::c3);
-  for (int i = 0; i < N; ++i) {
-    ut[i] = u[i] + h * (T::a41 * K[0][i] + T::a42 * K[1][i] + T::a43 * K[2][i]);
-    vt[i] = v[i] + h * (T::a41 * K[7][i] + T::a42 * K[8][i] + T::a43 * K[9][i]);
+  for (const Span& sp : spans) {
+    comb(sp.lo, sp.hi, ut, u, h, T::a41, K[0], T::a42, K[1], T::a43, K[2]);
+    comb(sp.lo, sp.hi, vt, v, h, T::a41, K[7], T::a42, K[8], T::a43, K[9]);
   }
   stage(3, T::c4);
-  for (int i = 0; i < N; ++i) {
-    ut[i] = u[i] + h * (T::a51 * K[0][i] + T::a52 * K[1][i] + T::a53 * K[2][i] + T::a54 * K[3][i]);
-    vt[i] = v[i] + h * (T::a51 * K[7][i] + T::a52 * K[8][i] + T::a53 * K[9][i] + T::a54 * K[10][i]);
+  for (const Span& sp : spans) {
+    comb(sp.lo, sp.hi, ut, u, h, T::a51, K[0], T::a52, K[1], T::a53, K[2], T::a54, K[3]);
+    comb(sp.lo, sp.hi, vt, v, h, T::a51, K[7], T::a52, K[8], T::a53, K[9], T::a54, K[10]);
   }
   stage(4, T::c5);
-  for (int i = 0; i < N; ++i) {
-    ut[i] = u[i] + h * (T::a61 * K[0][i] + T::a62 * K[1][i] + T::a63 * K[2][i] + T::a64 * K[3][i] +
-                        T::a65 * K[4][i]);
-    vt[i] = v[i] + h * (T::a61 * K[7][i] + T::a62 * K[8][i] + T::a63 * K[9][i] + T::a64 * K[10][i] +
-                        T::a65 * K[11][i]);
+  for (const Span& sp : spans) {
+    comb(sp.lo, sp.hi, ut, u, h, T::a61, K[0], T::a62, K[1], T::a63, K[2], T::a64, K[3], T::a65, K[4]);
+    comb(sp.lo, sp.hi, vt, v, h, T::a61, K[7], T::a62, K[8], T::a63, K[9], T::a64, K[10], T::a65, K[11]);
   }
   stage(5, 1.0);
-  double* __restrict u1 = u1_.data();
-  double* __restrict v1 = v1_.data();
-  for (int i = 0; i < N; ++i) {
-    u1[i] = u[i] + h * (T::b1 * K[0][i] + T::b3 * K[2][i] + T::b4 * K[3][i] + T::b5 * K[4][i] + T::b6 * K[5][i]);
-    v1[i] = v[i] + h * (T::b1 * K[7][i] + T::b3 * K[9][i] + T::b4 * K[10][i] + T::b5 * K[11][i] +
-                        T::b6 * K[12][i]);
-  }
-  // Stage 7 is evaluated at the new point (c7 = 1, a7 = b): FSAL.
-  for (int i = 0; i < N; ++i) {
-    ut[i] = u1[i];
-    vt[i] = v1[i];
+  for (const Span& sp : spans) {
+    comb(sp.lo, sp.hi, u1, u, h, T::b1, K[0], T::b3, K[2], T::b4, K[3], T::b5, K[4], T::b6, K[5]);
+    comb(sp.lo, sp.hi, v1, v, h, T::b1, K[7], T::b3, K[9], T::b4, K[10], T::b5, K[11], T::b6, K[12]);
+    // Stage 7 is evaluated at the new point (c7 = 1, a7 = b): FSAL.
+    std::copy(u1 + sp.lo, u1 + sp.hi, ut + sp.lo);
+    std::copy(v1 + sp.lo, v1 + sp.hi, vt + sp.lo);
   }
   stage(6, 1.0);
   h_ = h;
   u0_ = u;
   v0_ = v;
-  return error_norm(u, v, mobile, atol_u, atol_v, rtol);
+  return error_norm(spans, u, v, mobile, atol_u, atol_v, rtol);
 }
 
 }  // namespace sb::event_detail

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include "springblock/integrate/active_set.hpp"
 #include "springblock/integrate/dopri5.hpp"
 #include "springblock/integrate/event_search.hpp"
 #include "springblock/integrate/quiet_phase.hpp"
@@ -12,6 +13,7 @@
 namespace sb {
 namespace {
 
+using event_detail::ActiveSet;
 using event_detail::Dopri5;
 using event_detail::EventSearch;
 using event_detail::QuietPhase;
@@ -39,6 +41,9 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   Dopri5 dp(N);
   EventSearch search(N);
   Switching sw(N);
+  // Settled grooves are a form of fast-forward (they drop a transient below the tolerance), so
+  // they follow the same switch; the closed-form crossings of stuck blocks are exact either way.
+  ActiveSet active(c, fast_forward, atol_u, atol_v);
   std::unique_ptr<QuietPhase> quiet;
   if (fast_forward) {
     quiet = std::make_unique<QuietPhase>(c);
@@ -49,14 +54,28 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   // quiet-phase samples (O(N) per sample instead of O(sum n^2) for long grooves).
   const bool ends_only = !obs.reads_groove_interiors();
 
+  // After every switch: which runs are stepped, which stuck blocks are watched.
+  auto reclassify = [&] {
+    active.rebuild(c, s);
+    dp.set_frozen(s.u.data());
+  };
+  // Settle the switches flagged at s.t (settled grooves first brought to s.t).
+  auto switch_now = [&] {
+    active.materialise(s.t, s.u.data(), s.v.data());
+    if (sw.settle(c, s) > 0 && log_) log_->push_back(s.t);
+    reclassify();
+  };
+
   sw.sync(c, s);
   sw.settle(c, s);
+  reclassify();
   obs.sample(c, s);
   SampleClock clock{sample_dt, static_cast<long long>(std::floor(s.t / sample_dt)) + 1};
   bool stage1_valid = false;
 
   auto sample_if_due = [&] {
     if (s.t == clock.next()) {
+      active.materialise(s.t, s.u.data(), s.v.data());
       obs.sample(c, s);
       ++clock.k;
     }
@@ -89,56 +108,82 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
       s.t = next.t;
       if (next.block >= 0) sw.flag(next.block);
       if (sw.settle(c, s) > 0 && log_) log_->push_back(s.t);
+      // Every groove is exact at s.t: none is settled yet, so the rebuild classifies afresh.
+      reclassify();
       stage1_valid = false;
       sample_if_due();
       continue;
     }
 
+    const auto& spans = active.stepped();
     if (!stage1_valid) {
-      dp.first_stage<Coupled, Damped>(c, s.u.data(), s.v.data(), s.t, sw.mobile(), sw.f_kin());
+      dp.first_stage<Coupled, Damped>(c, spans, s.u.data(), s.v.data(), s.t, sw.mobile(), sw.f_kin());
       ++s.rhs_evals;
       stage1_valid = true;
     }
-    // Shorten the step to land exactly on the next sample (or the end of the run).
-    const double t_stop = std::min(clock.next(), t_end);
+    // Shorten the step to land exactly on the next sample, the next closed-form crossing of a
+    // stuck block, or the end of the run.
+    const auto crossing = active.next_crossing();
+    if (crossing.t <= s.t) {
+      sw.flag(crossing.block);
+      switch_now();
+      stage1_valid = false;
+      continue;
+    }
+    const double t_stop = std::min({clock.next(), t_end, crossing.t});
     const bool clipped = s.t + h >= t_stop;
     const double h_try = clipped ? t_stop - s.t : h;
-    const double err = dp.attempt<Coupled, Damped>(c, s.u.data(), s.v.data(), s.t, h_try, sw.mobile(),
+    const double err = dp.attempt<Coupled, Damped>(c, spans, s.u.data(), s.v.data(), s.t, h_try, sw.mobile(),
                                                    sw.f_kin(), atol_u, atol_v, rtol);
     s.rhs_evals += 6;
-    // Standard step-size control of a 5th-order method, factor limited to [0.2, 5].
     const double factor = err == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(err, -0.2), 0.2, 5.0);
     if (!(err <= 1.0)) {
       h = h_try * std::min(factor, 1.0);
       continue;
     }
-    const double theta = search.locate(c, s, dp, h_try, sw.mobile());
+    const double theta = search.locate(c, s, dp, h_try, active);
     if (theta <= 1.0) {
       // Redo the step to exactly the earliest event time, switch there, restart.
       const double h_event = theta * h_try;
       if (h_event > 0.0) {
-        dp.attempt<Coupled, Damped>(c, s.u.data(), s.v.data(), s.t, h_event, sw.mobile(), sw.f_kin(),
+        dp.attempt<Coupled, Damped>(c, spans, s.u.data(), s.v.data(), s.t, h_event, sw.mobile(), sw.f_kin(),
                                     atol_u, atol_v, rtol);
         s.rhs_evals += 6;
-        std::copy(dp.u1(), dp.u1() + N, s.u.begin());
-        std::copy(dp.v1(), dp.v1() + N, s.v.begin());
+        for (const auto& sp : spans) {
+          std::copy(dp.u1() + sp.lo, dp.u1() + sp.hi, s.u.begin() + sp.lo);
+          std::copy(dp.v1() + sp.lo, dp.v1() + sp.hi, s.v.begin() + sp.lo);
+        }
         s.t = (theta == 1.0 && clipped) ? t_stop : s.t + h_event;
         ++s.steps;
       }
       for (int i : search.hits()) sw.flag(i);
-      if (sw.settle(c, s) > 0 && log_) log_->push_back(s.t);
+      // A closed-form crossing due at the same instant switches with them.
+      if (theta == 1.0 && clipped && t_stop == crossing.t) sw.flag(crossing.block);
+      switch_now();
       stage1_valid = false;
       sample_if_due();
       continue;
     }
-    std::copy(dp.u1(), dp.u1() + N, s.u.begin());
-    std::copy(dp.v1(), dp.v1() + N, s.v.begin());
+    for (const auto& sp : spans) {
+      std::copy(dp.u1() + sp.lo, dp.u1() + sp.hi, s.u.begin() + sp.lo);
+      std::copy(dp.v1() + sp.lo, dp.v1() + sp.hi, s.v.begin() + sp.lo);
+    }
     dp.accept_fsal();
     s.t = clipped ? t_stop : s.t + h_try;
     ++s.steps;
     h = clipped ? std::max(h, h_try * factor) : h_try * factor;
+    if (clipped && t_stop == crossing.t) {
+      sw.flag(crossing.block);
+      switch_now();
+      stage1_valid = false;
+    } else {
+      // Ringing grooves whose transient has died leave the stepped set (stage 1 of the others
+      // stays valid: nothing switched).
+      active.retire_settled(c, s);
+    }
     sample_if_due();
   }
+  active.materialise(s.t, s.u.data(), s.v.data());
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 
 namespace sb::event_detail {
 
-double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, double h, const double* mobile,
+double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, double h, const ActiveSet& active,
                            double window) {
   const int N = c.N;
   const double t = s.t;
@@ -12,8 +12,11 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
   const double* u1 = dp.u1();
   const double* v1 = dp.v1();
   auto nb_u = [&](int j, double th) {
-    if (mobile[j] == 0.0) return s.u[j];  // a stuck neighbour does not move
-    return th == 1.0 ? u1[j] : dp.dense_u(j, th);
+    switch (active.kind(j)) {
+      case ActiveSet::kStepped: return th == 1.0 ? u1[j] : dp.dense_u(j, th);
+      case ActiveSet::kSettled: return active.settled_u(j, t + th * h);
+      default: return s.u[j];  // a stuck neighbour does not move
+    }
   };
   auto g = [&](int i, double th) {
     if (s.dir[i] != 0) return s.dir[i] * (th == 1.0 ? v1[i] : dp.dense_v(i, th));
@@ -23,28 +26,27 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
     if (i + 1 < N) F += c.K_int * (nb_u(i + 1, th) - s.u[i]);
     return c.f_static[i] - std::fabs(F);
   };
+  const std::vector<int>& watched = active.watched();
   double best = 2.0;
-  for (int i = 0; i < N; ++i) {
-    theta_[i] = 2.0;
-    if (!c.contact[i]) continue;
-    const bool smooth_only = s.dir[i] == 0 && (i == 0 || mobile[i - 1] == 0.0) &&
-                             (i + 1 == N || mobile[i + 1] == 0.0);
+  for (std::size_t k = 0; k < watched.size(); ++k) {
+    const int i = watched[k];
+    theta_[k] = 2.0;
     double lo = 0, hi = 2.0;
-    if (!smooth_only && g(i, 0.5) <= 0) hi = 0.5;
-    else if (g(i, 1.0) <= 0) lo = smooth_only ? 0.0 : 0.5, hi = 1.0;
+    if (g(i, 0.5) <= 0) hi = 0.5;
+    else if (g(i, 1.0) <= 0) lo = 0.5, hi = 1.0;
     if (hi > 1.0) continue;
     // Bisection keeps g(lo) > 0 (or lo = 0, where the block has just switched), g(hi) <= 0.
     for (int it = 0; it < 100 && (hi - lo) * h > 4e-16 * std::fabs(t + hi * h); ++it) {
       const double mid = 0.5 * (lo + hi);
       (g(i, mid) > 0 ? lo : hi) = mid;
     }
-    theta_[i] = hi;
+    theta_[k] = hi;
     if (hi < best) best = hi;
   }
   hits_.clear();
   if (best <= 1.0)
-    for (int i = 0; i < N; ++i)
-      if (theta_[i] <= best + window) hits_.push_back(i);
+    for (std::size_t k = 0; k < watched.size(); ++k)
+      if (theta_[k] <= best + window) hits_.push_back(watched[k]);
   return best;
 }
 

@@ -4,11 +4,13 @@
 // Event functions, positive while nothing happens:
 //   sliding block:  g = dir * v           (stops when the velocity reaches zero)
 //   stuck block:    g = f_static - |F|    (starts to slide when the force reaches the threshold)
-// Each is sampled at the middle and the end of the step (the middle only where something can
-// move: a sliding block, or a stuck block with a moving neighbour; otherwise g is affine in t);
-// the first sign change is refined by bisection to round-off in t.
+// Only the watched blocks of the active set are searched: sliding blocks and stuck blocks next
+// to a stepped run (every other stuck block has an affine force and a closed-form crossing, see
+// active_set.hpp). Each g is sampled at the middle and the end of the step and the first sign
+// change is refined by bisection to round-off in t.
 #include <vector>
 
+#include "springblock/integrate/active_set.hpp"
 #include "springblock/integrate/dopri5.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
@@ -21,7 +23,7 @@ class EventSearch {
 
   // Earliest event fraction theta in [0, 1] of the step [s.t, s.t + h], or a value > 1 if none.
   // hits() then lists the blocks whose events lie within `window` (fraction) of it, in order.
-  double locate(const Chain& c, const State& s, const Dopri5& dp, double h, const double* mobile,
+  double locate(const Chain& c, const State& s, const Dopri5& dp, double h, const ActiveSet& active,
                 double window = 1e-12);
   const std::vector<int>& hits() const { return hits_; }
 

@@ -73,6 +73,7 @@ class FrictionObserver final : public Observer {
   std::size_t next_stress_ = 0;
   std::vector<Sample> series_;
   std::vector<StressSnapshot> stress_;
+  std::vector<int> contacts_;  // indices of the contact blocks, built on the first sample
 };
 
 }  // namespace sb

@@ -1,0 +1,217 @@
+#include "springblock/integrate/active_set.hpp"
+
+#include <gsl/gsl_linalg.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sb::event_detail {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A settled run's neglected transient, as a fraction of the stepper's absolute tolerance.
+constexpr double kSettleFrac = 0.1;
+
+// Solve the symmetric tridiagonal system (diag, off) x = rhs with GSL (n = 1 by hand: GSL
+// rejects an empty off-diagonal).
+void solve_tridiag(std::vector<double>& diag, std::vector<double>& off, std::vector<double>& rhs, double* x,
+                   int n) {
+  if (n == 1) {
+    x[0] = rhs[0] / diag[0];
+    return;
+  }
+  gsl_vector_view d = gsl_vector_view_array(diag.data(), n);
+  gsl_vector_view e = gsl_vector_view_array(off.data(), n - 1);
+  gsl_vector_view b = gsl_vector_view_array(rhs.data(), n);
+  gsl_vector_view out = gsl_vector_view_array(x, n);
+  gsl_linalg_solve_symm_tridiag(&d.vector, &e.vector, &b.vector, &out.vector);
+}
+
+}  // namespace
+
+ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v)
+    : N_(c.N),
+      K_int_(c.K_int),
+      settle_grooves_(settle_grooves),
+      eps_u_(kSettleFrac * atol_u),
+      eps_v_(kSettleFrac * atol_v),
+      kind_(c.N, kStuck),
+      A_(c.N, 0.0),
+      B_(c.N, 0.0),
+      t_cross_(c.N, kInf),
+      diag_(c.N),
+      off_(c.N),
+      rhs_(c.N) {
+  runs_.reserve(c.N);
+  stepped_.reserve(c.N);
+  watched_.reserve(c.N);
+}
+
+const ActiveSet::Shape& ActiveSet::shape(const Chain& c, int n, bool left, bool right) {
+  const auto key = std::make_tuple(n, left, right);
+  auto it = shapes_.find(key);
+  if (it != shapes_.end()) return it->second;
+  Shape sh{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
+  auto solve = [&](auto&& rhs, std::vector<double>& x) {
+    for (int k = 0; k < n; ++k) {
+      diag_[k] = c.K_s + ((k > 0 || left) ? K_int_ : 0.0) + ((k + 1 < n || right) ? K_int_ : 0.0);
+      off_[k] = -K_int_;
+      rhs_[k] = rhs(k);
+    }
+    solve_tridiag(diag_, off_, rhs_, x.data(), n);
+  };
+  solve([&](int) { return c.K_s * c.v_slider; }, sh.B);
+  solve([&](int k) { return -c.m * c.gamma * sh.B[k]; }, sh.a0);
+  solve([&](int k) { return k == 0 && left ? K_int_ : 0.0; }, sh.gL);
+  solve([&](int k) { return k == n - 1 && right ? K_int_ : 0.0; }, sh.gR);
+  return shapes_.emplace(key, std::move(sh)).first->second;
+}
+
+void ActiveSet::particular(const Chain& c, const State& s, Span r) {
+  const int n = r.hi - r.lo;
+  const bool left = r.lo > 0, right = r.hi < N_;  // held by a stuck block there (else a free end)
+  const Shape& sh = shape(c, n, left, right);
+  const double uL = left ? s.u[r.lo - 1] : 0.0, uR = right ? s.u[r.hi] : 0.0;
+  for (int k = 0; k < n; ++k) {
+    B_[r.lo + k] = sh.B[k];
+    A_[r.lo + k] = sh.a0[k] + uL * sh.gL[k] + uR * sh.gR[k];
+  }
+}
+
+bool ActiveSet::settled_now(const State& s, Span r) const {
+  if (!settle_grooves_) return false;
+  for (int i = r.lo; i < r.hi; ++i) {
+    if (std::fabs(s.u[i] - (A_[i] + B_[i] * s.t)) > eps_u_) return false;
+    if (std::fabs(s.v[i] - B_[i]) > eps_v_) return false;
+  }
+  return true;
+}
+
+void ActiveSet::rebuild(const Chain& c, const State& s) {
+  // A grooves-only run is always a whole groove segment; it keeps its A, B while it stays
+  // grooves-only, because its stuck boundary blocks have not moved since they were computed.
+  std::vector<std::uint8_t>& old = kind_;
+  runs_.clear();
+  for (int i = 0; i < N_;) {
+    const bool mobile_i = !c.contact[i] || s.dir[i] != 0;
+    if (!mobile_i) {
+      ++i;
+      continue;
+    }
+    int j = i;
+    // Without internal springs every block is its own system.
+    if (K_int_ > 0)
+      while (j + 1 < N_ && (!c.contact[j + 1] || s.dir[j + 1] != 0)) ++j;
+    Run r{{i, j + 1}, kStepped, true};
+    for (int k = i; k <= j; ++k) r.grooves = r.grooves && !c.contact[k];
+    runs_.push_back(r);
+    i = j + 1;
+  }
+  for (Run& r : runs_) {
+    if (!r.grooves) continue;
+    const std::uint8_t was = old[r.span.lo];
+    if (was == kSettled) {
+      r.kind = kSettled;
+      continue;
+    }
+    // Was stepped (ringing, or part of an active run) or never classified: new A, B.
+    particular(c, s, r.span);
+    if (settled_now(s, r.span)) r.kind = kSettled;
+  }
+  std::fill(kind_.begin(), kind_.end(), kStuck);
+  for (const Run& r : runs_)
+    for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = r.kind;
+  stepped_.clear();
+  watched_.clear();
+  for (const Run& r : runs_) {
+    if (r.kind != kStepped) continue;
+    stepped_.push_back(r.span);
+    if (K_int_ > 0 && r.span.lo > 0 && (watched_.empty() || watched_.back() != r.span.lo - 1))
+      watched_.push_back(r.span.lo - 1);
+    for (int i = r.span.lo; i < r.span.hi; ++i)
+      if (s.dir[i] != 0) watched_.push_back(i);
+    if (K_int_ > 0 && r.span.hi < N_) watched_.push_back(r.span.hi);
+  }
+  for (int i = 0; i < N_; ++i) t_cross_[i] = kInf;
+  for (int i = 0; i < N_; ++i)
+    if (c.contact[i] && s.dir[i] == 0) update_crossing(c, s, i);
+  for (int i : watched_) t_cross_[i] = kInf;
+  refresh_next();
+}
+
+void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
+  double a = c.K_s * (c.v_slider * s.t - s.u[i]), b = c.K_s * c.v_slider;
+  if (K_int_ > 0) {
+    for (int j : {i - 1, i + 1}) {
+      if (j < 0 || j >= N_) continue;
+      if (kind_[j] == kStepped) {  // watched instead: its force is not affine
+        t_cross_[i] = kInf;
+        return;
+      }
+      if (kind_[j] == kSettled) {
+        a += K_int_ * (settled_u(j, s.t) - s.u[i]);
+        b += K_int_ * B_[j];
+      } else {
+        a += K_int_ * (s.u[j] - s.u[i]);
+      }
+    }
+  }
+  // First time a + b tau reaches +-f_static. b = 0 (nothing loads it) never crosses.
+  const double f = c.f_static[i];
+  if (b == 0.0) {
+    t_cross_[i] = kInf;
+    return;
+  }
+  const double tau = ((b > 0 ? f : -f) - a) / b;
+  t_cross_[i] = s.t + std::max(tau, 0.0);
+}
+
+void ActiveSet::refresh_next() {
+  next_ = {kInf, -1};
+  for (int i = 0; i < N_; ++i)
+    if (t_cross_[i] < next_.t) next_ = {t_cross_[i], i};
+}
+
+bool ActiveSet::retire_settled(const Chain& c, const State& s) {
+  if (!settle_grooves_) return false;
+  bool changed = false;
+  for (Run& r : runs_) {
+    if (r.kind != kStepped || !r.grooves || !settled_now(s, r.span)) continue;
+    r.kind = kSettled;
+    for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = kSettled;
+    changed = true;
+  }
+  if (!changed) return false;
+  stepped_.clear();
+  watched_.clear();
+  for (const Run& r : runs_) {
+    if (r.kind != kStepped) continue;
+    stepped_.push_back(r.span);
+    if (K_int_ > 0 && r.span.lo > 0 && (watched_.empty() || watched_.back() != r.span.lo - 1))
+      watched_.push_back(r.span.lo - 1);
+    for (int i = r.span.lo; i < r.span.hi; ++i)
+      if (s.dir[i] != 0) watched_.push_back(i);
+    if (K_int_ > 0 && r.span.hi < N_) watched_.push_back(r.span.hi);
+  }
+  // The stuck blocks beside a newly settled run may now have an affine force.
+  for (const Run& r : runs_) {
+    if (r.kind != kSettled) continue;
+    for (int i : {r.span.lo - 1, r.span.hi})
+      if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && t_cross_[i] == kInf) update_crossing(c, s, i);
+  }
+  refresh_next();
+  return true;
+}
+
+void ActiveSet::materialise(double t, double* u, double* v) const {
+  for (const Run& r : runs_) {
+    if (r.kind != kSettled) continue;
+    for (int i = r.span.lo; i < r.span.hi; ++i) {
+      u[i] = A_[i] + B_[i] * t;
+      v[i] = B_[i];
+    }
+  }
+}
+
+}  // namespace sb::event_detail

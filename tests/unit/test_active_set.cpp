@@ -1,0 +1,186 @@
+// Tests of the active set that localises the event-driven stepper: which runs are stepped, which
+// stuck blocks are watched, the settled grooves' affine solution against the equations of motion,
+// and the closed-form threshold crossing of a stuck block with no stepped neighbour.
+#include "springblock/integrate/active_set.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using sb::event_detail::ActiveSet;
+
+// Ten blocks: pawls 0-2 and 5-7, grooves 3-4 (held by two stuck blocks) and 8-9 (free end).
+sb::Chain grooved(double gamma) {
+  sb::Chain c;
+  c.N = 10;
+  c.K_s = 1e4;
+  c.K_int = 7.3e5;
+  c.m = 2.4e-6;
+  c.gamma = gamma;
+  c.v_slider = 5e-4;
+  c.F_n = 2.0;
+  c.contact = {1, 1, 1, 0, 0, 1, 1, 1, 0, 0};
+  c.n_contact = 6;
+  c.F_load = 12.0;
+  for (int i = 0; i < c.N; ++i) {
+    c.mu_s.push_back(c.contact[i] ? 1.0 : 0.0);
+    c.mu_d.push_back(c.contact[i] ? 0.5 : 0.0);
+    c.f_static.push_back(c.mu_s.back() * c.F_n);
+    c.f_kinetic.push_back(c.mu_d.back() * c.F_n);
+  }
+  return c;
+}
+
+const double kAtolU = 4e-13, kAtolV = 4e-13 * 6.45e4;
+
+// Put every groove block on its quasi-static path u = A + B t (no transient), solved here with
+// a dense Eigen solve of the grooves' equations, independently of the active set's tridiagonal
+// solver: K B = K_s v 1 and K A = b - m gamma B, K the grooves' stiffness with the contact blocks
+// held where they are.
+void settle_grooves(const sb::Chain& c, sb::State& s) {
+  std::vector<int> g;
+  for (int i = 0; i < c.N; ++i)
+    if (!c.contact[i]) g.push_back(i);
+  const int n = static_cast<int>(g.size());
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd load(n), b(n);
+  for (int r = 0; r < n; ++r) {
+    const int i = g[r];
+    K(r, r) = c.K_s;
+    load(r) = c.K_s * c.v_slider;
+    b(r) = 0;
+    for (int j : {i - 1, i + 1}) {
+      if (j < 0 || j >= c.N) continue;
+      K(r, r) += c.K_int;
+      if (c.contact[j]) {
+        b(r) += c.K_int * s.u[j];
+      } else {
+        const int q = static_cast<int>(std::find(g.begin(), g.end(), j) - g.begin());
+        K(r, q) -= c.K_int;
+      }
+    }
+  }
+  const Eigen::VectorXd B = K.fullPivLu().solve(load);
+  const Eigen::VectorXd A = K.fullPivLu().solve(b - c.m * c.gamma * B);
+  for (int r = 0; r < n; ++r) {
+    s.u[g[r]] = A(r) + B(r) * s.t;
+    s.v[g[r]] = B(r);
+  }
+}
+
+TEST(ActiveSet, StepsOnlyRunsThatMoveAndWatchesTheirStuckNeighbours) {
+  const sb::Chain c = grooved(1e4);
+  sb::State s = sb::State::at_rest(c);
+  s.t = 0.01;
+  s.dir[1] = 1;  // block 1 slides; 0 and 2 are stuck beside it
+  // Groove 3-4 rings, groove 8-9 sits on its (approximate) quasi-static solution.
+  settle_grooves(c, s);
+  s.v[3] += 1e-3;
+  ActiveSet a(c, true, kAtolU, kAtolV);
+  a.rebuild(c, s);
+  std::vector<std::pair<int, int>> spans;
+  for (const auto& sp : a.stepped()) spans.emplace_back(sp.lo, sp.hi);
+  const std::vector<std::pair<int, int>> expect_spans = {{1, 2}, {3, 5}};
+  EXPECT_EQ(spans, expect_spans);
+  // Watched: the slider's stuck neighbours 0 and 2 (2 also borders the ringing groove), the
+  // sliding block itself, and 5 beside the ringing groove. Nothing beyond.
+  EXPECT_EQ(a.watched(), (std::vector<int>{0, 1, 2, 5}));
+  EXPECT_EQ(a.kind(8), ActiveSet::kSettled);
+  EXPECT_EQ(a.kind(6), ActiveSet::kStuck);
+  // Without settling (the reference mode) the quiet groove is stepped as well.
+  ActiveSet ref(c, false, kAtolU, kAtolV);
+  ref.rebuild(c, s);
+  EXPECT_EQ(ref.stepped().size(), 3u);
+  EXPECT_EQ(ref.kind(8), ActiveSet::kStepped);
+}
+
+TEST(ActiveSet, UncoupledBlocksAreEachTheirOwnRun) {
+  sb::Chain c = grooved(1e4);
+  c.K_int = 0;
+  sb::State s = sb::State::at_rest(c);
+  s.dir[1] = s.dir[2] = 1;
+  ActiveSet a(c, false, kAtolU, kAtolV);
+  a.rebuild(c, s);
+  // Blocks 1 and 2 slide side by side but do not interact: separate runs, no stuck block watched.
+  ASSERT_GE(a.stepped().size(), 2u);
+  EXPECT_EQ(a.stepped()[0].lo, 1);
+  EXPECT_EQ(a.stepped()[0].hi, 2);
+  EXPECT_EQ(a.watched(), (std::vector<int>{1, 2}));
+}
+
+TEST(ActiveSet, SettledGrooveIsTheParticularSolutionOfItsEquations) {
+  for (double gamma : {1e4, 0.0}) {
+    const sb::Chain c = grooved(gamma);
+    sb::State s = sb::State::at_rest(c);
+    s.t = 0.02;
+    for (int i = 0; i < c.N; ++i) s.u[i] = 1e-6 * std::sin(1.0 + i);
+    settle_grooves(c, s);
+    ActiveSet a(c, true, kAtolU, kAtolV);
+    a.rebuild(c, s);
+    // The groove positions relaxed above are within round-off of the active set's A + B t, so
+    // both grooves are settled and nothing is stepped.
+    EXPECT_TRUE(a.stepped().empty()) << "gamma " << gamma;
+    ASSERT_EQ(a.kind(3), ActiveSet::kSettled);
+    // A + B t solves m u'' + m gamma u' + K u = K_s v t + b exactly: u'' = 0, u' = B, so the
+    // net force on every groove block (damping included) vanishes at any time, here long after
+    // the rebuild. Scale of the terms: K_int times the groove displacements (~1e-6 m).
+    for (double t : {0.02, 0.5, 3.0}) {
+      std::vector<double> u = s.u, v = s.v;
+      a.materialise(t, u.data(), v.data());
+      for (int i : {3, 4, 8, 9}) {
+        const double F = c.driving_force(i, u.data(), v.data(), t);
+        EXPECT_NEAR(F, 0.0, 1e-9 * c.K_int * 1e-6) << "gamma " << gamma << " block " << i << " t " << t;
+      }
+    }
+  }
+}
+
+TEST(ActiveSet, ClosedFormCrossingReachesTheThresholdExactly) {
+  const sb::Chain c = grooved(1e4);
+  sb::State s = sb::State::at_rest(c);
+  s.t = 0.01;
+  settle_grooves(c, s);
+  ActiveSet a(c, true, kAtolU, kAtolV);
+  a.rebuild(c, s);
+  ASSERT_TRUE(a.watched().empty());  // nothing slides, nothing rings
+  const auto next = a.next_crossing();
+  ASSERT_GE(next.block, 0);
+  ASSERT_GT(next.t, s.t);
+  // At the predicted instant the block's force (neighbours on their affine paths) is at its
+  // threshold, and every other stuck block is still below its own.
+  std::vector<double> u = s.u, v = s.v;
+  a.materialise(next.t, u.data(), v.data());
+  for (int i = 0; i < c.N; ++i) {
+    if (!c.contact[i]) continue;
+    const double F = c.driving_force(i, u.data(), v.data(), next.t);
+    if (i == next.block)
+      EXPECT_NEAR(std::fabs(F), c.f_static[i], 1e-12 * c.f_static[i]);
+    else
+      EXPECT_LE(std::fabs(F), c.f_static[i] * (1 + 1e-12)) << "block " << i;
+  }
+}
+
+TEST(ActiveSet, RingingGrooveRetiresOnceItsTransientIsBelowTolerance) {
+  const sb::Chain c = grooved(1e4);
+  sb::State s = sb::State::at_rest(c);
+  s.t = 0.01;
+  settle_grooves(c, s);
+  s.v[4] += 10 * kAtolV;  // a transient ten times the tolerance
+  ActiveSet a(c, true, kAtolU, kAtolV);
+  a.rebuild(c, s);
+  EXPECT_EQ(a.kind(4), ActiveSet::kStepped);
+  EXPECT_FALSE(a.retire_settled(c, s));  // still ringing: stays
+  s.v[4] -= 10 * kAtolV - 0.05 * kAtolV;  // decayed to 5 % of it
+  EXPECT_TRUE(a.retire_settled(c, s));
+  EXPECT_EQ(a.kind(4), ActiveSet::kSettled);
+  EXPECT_TRUE(a.stepped().empty());
+  // The stuck blocks beside it now have closed-form crossings.
+  EXPECT_GE(a.next_crossing().block, 0);
+}
+
+}  // namespace
