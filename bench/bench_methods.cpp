@@ -1,9 +1,12 @@
-// RK4 (the paper's method, h = 1e-7 s) against the event-driven method (tol 1e-8) on the N = 360
+// RK4 (the paper's method, h = 1e-7 s) against the event-driven method on the N = 360
 // single-level and hierarchical scenes: one repetition each, same seed, same simulated duration
 // (1 t0, which already costs RK4 tens of seconds because groove blocks never let it jump).
 // Benchmarks run interleaved in one process, so the reported ratio is side by side. Accuracy at
-// these settings is measured separately by the accuracy_cost reproduction target (the event
-// method is the converged reference; RK4 at h = 1e-7 s carries stop-position errors).
+// these settings is measured separately by the accuracy_cost reproduction target: on the
+// first-peak study (periodic:10,10, N = 360) RK4 at h = 1e-7 s is off by 8e-3 in mu_s, the
+// event method by 1.6e-3 at tol 1e-6 and 1.3e-4 at tol 1e-8. So tol 1e-6 is the loosest
+// setting measured that is at least as accurate as the paper's RK4 ("equal accuracy"), and
+// tol 1e-8 is two orders of magnitude better; both are timed.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -12,13 +15,13 @@
 
 namespace {
 
-sb::Scene scene(const std::string& pattern, sb::Method m) {
+sb::Scene scene(const std::string& pattern, sb::Method m, double tol) {
   sb::Scene s;
   s.geometry = {360, 0.072};
   s.pattern = sb::parse_pattern(pattern);
   s.run.method = m;
   s.run.dt_s = 1e-7;
-  s.run.tol = 1e-8;
+  s.run.tol = tol;
   s.run.duration_t0 = 1.0;
   s.seed = 3;
   s.reps = 1;
@@ -26,8 +29,8 @@ sb::Scene scene(const std::string& pattern, sb::Method m) {
   return s;
 }
 
-void bm_method(benchmark::State& st, std::string pattern, sb::Method m) {
-  const sb::Scene s = scene(pattern, m);
+void bm_method(benchmark::State& st, std::string pattern, sb::Method m, double tol) {
+  const sb::Scene s = scene(pattern, m, tol);
   sb::RunResult r;
   for (auto _ : st) {
     r = sb::run_repetition(s, 0);
@@ -40,17 +43,23 @@ void bm_method(benchmark::State& st, std::string pattern, sb::Method m) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(bm_method, periodic_10_10_rk4, "periodic:10,10", sb::Method::RK4)
+BENCHMARK_CAPTURE(bm_method, periodic_10_10_rk4, "periodic:10,10", sb::Method::RK4, 1e-9)
     ->Name("method/periodic:10,10/rk4")->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK_CAPTURE(bm_method, periodic_10_10_event, "periodic:10,10", sb::Method::Event)
-    ->Name("method/periodic:10,10/event")->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK_CAPTURE(bm_method, hierarchical_rk4, "hierarchical:60,6,1", sb::Method::RK4)
+BENCHMARK_CAPTURE(bm_method, periodic_10_10_event_1em8, "periodic:10,10", sb::Method::Event, 1e-8)
+    ->Name("method/periodic:10,10/event_tol1e-08")->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(bm_method, periodic_10_10_event_1em6, "periodic:10,10", sb::Method::Event, 1e-6)
+    ->Name("method/periodic:10,10/event_tol1e-06")->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(bm_method, hierarchical_rk4, "hierarchical:60,6,1", sb::Method::RK4, 1e-9)
     ->Name("method/hierarchical:60,6,1/rk4")->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK_CAPTURE(bm_method, hierarchical_event, "hierarchical:60,6,1", sb::Method::Event)
-    ->Name("method/hierarchical:60,6,1/event")->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK_CAPTURE(bm_method, smooth_rk4, "smooth", sb::Method::RK4)
+BENCHMARK_CAPTURE(bm_method, hierarchical_event_1em8, "hierarchical:60,6,1", sb::Method::Event, 1e-8)
+    ->Name("method/hierarchical:60,6,1/event_tol1e-08")->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(bm_method, hierarchical_event_1em6, "hierarchical:60,6,1", sb::Method::Event, 1e-6)
+    ->Name("method/hierarchical:60,6,1/event_tol1e-06")->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(bm_method, smooth_rk4, "smooth", sb::Method::RK4, 1e-9)
     ->Name("method/smooth/rk4")->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK_CAPTURE(bm_method, smooth_event, "smooth", sb::Method::Event)
-    ->Name("method/smooth/event")->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(bm_method, smooth_event_1em8, "smooth", sb::Method::Event, 1e-8)
+    ->Name("method/smooth/event_tol1e-08")->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(bm_method, smooth_event_1em6, "smooth", sb::Method::Event, 1e-6)
+    ->Name("method/smooth/event_tol1e-06")->Unit(benchmark::kSecond)->Iterations(1);
 
 BENCHMARK_MAIN();
