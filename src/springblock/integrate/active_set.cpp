@@ -91,7 +91,7 @@ bool ActiveSet::settled_now(const State& s, Span r) const {
 void ActiveSet::rebuild(const Chain& c, const State& s) {
   // A grooves-only run is always a whole groove segment; it keeps its A, B while it stays
   // grooves-only, because its stuck boundary blocks have not moved since they were computed.
-  std::vector<std::uint8_t>& old = kind_;
+  // kind_ still holds the previous classification until it is refilled below.
   runs_.clear();
   for (int i = 0; i < N_;) {
     const bool mobile_i = !c.contact[i] || s.dir[i] != 0;
@@ -110,7 +110,7 @@ void ActiveSet::rebuild(const Chain& c, const State& s) {
   }
   for (Run& r : runs_) {
     if (!r.grooves) continue;
-    const std::uint8_t was = old[r.span.lo];
+    const std::uint8_t was = kind_[r.span.lo];
     if (was == kSettled) {
       r.kind = kSettled;
       continue;
@@ -122,22 +122,27 @@ void ActiveSet::rebuild(const Chain& c, const State& s) {
   std::fill(kind_.begin(), kind_.end(), kStuck);
   for (const Run& r : runs_)
     for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = r.kind;
+  list_stepped(s);
+  for (int i = 0; i < N_; ++i) t_cross_[i] = kInf;
+  for (int i = 0; i < N_; ++i)
+    if (c.contact[i] && s.dir[i] == 0) update_crossing(c, s, i);
+  for (int i : watched_) t_cross_[i] = kInf;
+  refresh_next();
+}
+
+void ActiveSet::list_stepped(const State& s) {
   stepped_.clear();
   watched_.clear();
   for (const Run& r : runs_) {
     if (r.kind != kStepped) continue;
     stepped_.push_back(r.span);
+    // In block order; a stuck block between two stepped runs is listed once.
     if (K_int_ > 0 && r.span.lo > 0 && (watched_.empty() || watched_.back() != r.span.lo - 1))
       watched_.push_back(r.span.lo - 1);
     for (int i = r.span.lo; i < r.span.hi; ++i)
       if (s.dir[i] != 0) watched_.push_back(i);
     if (K_int_ > 0 && r.span.hi < N_) watched_.push_back(r.span.hi);
   }
-  for (int i = 0; i < N_; ++i) t_cross_[i] = kInf;
-  for (int i = 0; i < N_; ++i)
-    if (c.contact[i] && s.dir[i] == 0) update_crossing(c, s, i);
-  for (int i : watched_) t_cross_[i] = kInf;
-  refresh_next();
 }
 
 void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
@@ -183,17 +188,7 @@ bool ActiveSet::retire_settled(const Chain& c, const State& s) {
     changed = true;
   }
   if (!changed) return false;
-  stepped_.clear();
-  watched_.clear();
-  for (const Run& r : runs_) {
-    if (r.kind != kStepped) continue;
-    stepped_.push_back(r.span);
-    if (K_int_ > 0 && r.span.lo > 0 && (watched_.empty() || watched_.back() != r.span.lo - 1))
-      watched_.push_back(r.span.lo - 1);
-    for (int i = r.span.lo; i < r.span.hi; ++i)
-      if (s.dir[i] != 0) watched_.push_back(i);
-    if (K_int_ > 0 && r.span.hi < N_) watched_.push_back(r.span.hi);
-  }
+  list_stepped(s);
   // The stuck blocks beside a newly settled run may now have an affine force.
   for (const Run& r : runs_) {
     if (r.kind != kSettled) continue;

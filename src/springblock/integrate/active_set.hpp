@@ -15,8 +15,8 @@
 // The cost of a step is therefore proportional to the blocks that actually move, which is what
 // makes a precursor of a few blocks in a 360-block chain cheap.
 //
-// A settled run drops a transient smaller than settle_frac times the stepper's absolute
-// tolerance (in u and in v); it keeps decaying, so the error committed is below one step's.
+// A settled run drops a transient smaller than 0.1 times the stepper's absolute tolerance (in u
+// and in v); it keeps decaying, so the error committed is below one step's.
 // With settle_grooves = false no run is ever settled (the reference mode used by the tests).
 #include <cstdint>
 #include <map>
@@ -37,7 +37,6 @@ class ActiveSet {
   ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v);
 
   // Classify the runs after a switch at s.t (every settled groove already materialised in s).
-  // Returns false if nothing needs stepping.
   void rebuild(const Chain& c, const State& s);
 
   // Runs stepped by Dormand-Prince, in block order.
@@ -81,6 +80,8 @@ class ActiveSet {
   const Shape& shape(const Chain& c, int n, bool left, bool right);
   std::map<std::tuple<int, bool, bool>, Shape> shapes_;
   bool settled_now(const State& s, Span r) const;
+  // Fill stepped_ and watched_ from runs_.
+  void list_stepped(const State& s);
   // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
   void update_crossing(const Chain& c, const State& s, int i);
   void refresh_next();

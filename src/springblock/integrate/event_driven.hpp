@@ -1,8 +1,12 @@
 #pragma once
 // Event-driven integrator: switching times located to the integration accuracy.
 //
-//  * Active phase (some contact block slides): Dormand-Prince 5(4) with error control
-//    (rtol = tol, atol = tol times the natural scales F_n/K_s and omega_s F_n/K_s). After each
+//  * Active phase (some contact block slides): only the pieces of the chain that move are
+//    stepped (active_set.hpp: runs holding a sliding block, and grooves still ringing; settled
+//    grooves are affine in t and stuck blocks with no stepped neighbour have closed-form
+//    threshold times, which end the step exactly when they are due). Dormand-Prince 5(4) with
+//    error control (rtol = tol, atol = tol times the natural scales F_n/K_s and
+//    omega_s F_n/K_s). After each
 //    accepted trial step the continuous extension is searched for switching events (a sliding
 //    block's v dir falls to 0; a stuck block's |F| rises to f_static), sampled at the middle and
 //    end of the step and refined by bisection. The step is then redone to exactly the earliest
