@@ -46,7 +46,9 @@ sb::Chain single_block(double mu_s, double mu_d) {
 // largest error against the closed form, in units of the cycle period T_d + T_s. (A position
 // error du made while sliding shifts the next slip onset by du / v, so onset errors are measured
 // against the cycle, not against the short sliding time.)
-double single_block_error(double tol) {
+// fast_forward = false runs the Dormand-Prince stepper; true the exact per-block solution that
+// the event method uses for chains without internal springs.
+double single_block_error(double tol, bool fast_forward = false) {
   const double mu_s = 1.0, mu_d = 0.3;
   const sb::Chain c = single_block(mu_s, mu_d);
   const auto cyc = sb::theory::cycle({c.m, c.K_s, c.v_slider, c.F_n}, mu_s, mu_d);
@@ -58,7 +60,7 @@ double single_block_error(double tol) {
     expect.push_back(start + cyc.T_d_s);
   }
   sb::State s = sb::State::at_rest(c);
-  sb::EventDriven ev(tol);
+  sb::EventDriven ev(tol, fast_forward);
   std::vector<double> log;
   ev.set_switch_log(&log);
   NullObserver obs;
@@ -94,6 +96,16 @@ TEST(EventIntegrator, SingleBlockMatchesClosedFormAndConvergesWithTol) {
   // well over one decade in error, unless already at round-off.
   EXPECT_TRUE(e8 < e6 / 10 || e8 < 1e-10);
   EXPECT_TRUE(e10 < e8 / 10 || e10 < 1e-10);
+}
+
+TEST(EventIntegrator, UncoupledExactSolutionIsTheClosedFormToRoundOff) {
+  // The per-block solution (K_int = 0) has no tolerance: its switching instants are the closed
+  // form's to round-off of the times (~1e-16 s on cycles of ~0.1 s), whatever tol says.
+  for (double tol : {1e-4, 1e-9}) {
+    const double e = single_block_error(tol, true);
+    std::printf("single block, exact per-block solution (tol %g unused): max error / period %.3e\n", tol, e);
+    EXPECT_LT(e, 1e-12);
+  }
 }
 
 // Groove chain N = 10 with pattern 3 pawls, 2 grooves; stuck blocks held by huge thresholds.

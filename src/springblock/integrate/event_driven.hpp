@@ -15,6 +15,8 @@
 //  * Quiet phase (every contact block stuck): propagated exactly (quiet_phase.hpp); the next
 //    threshold crossing is found without stepping. Samples inside it are exact.
 // Samples in the active phase are hit exactly by shortening the step that would pass them.
+// A chain without internal springs (K_int = 0) is solved exactly block by block instead
+// (uncoupled.hpp), unless fast-forward is off.
 #include <string>
 #include <vector>
 

@@ -47,6 +47,7 @@ class FrictionObserver final : public Observer {
   // mu(t) and stress snapshots need only contact blocks' forces (their own and their direct
   // neighbours' positions); groove interiors are never read.
   bool reads_groove_interiors() const override { return false; }
+  bool reads_only_friction() const override { return true; }
 
   // Results.
   bool slipped() const { return slipped_; }

@@ -17,6 +17,11 @@ class Observer {
   // neighbour. An observer that reads only contact blocks' forces says no, and an integrator
   // with an exact groove solution may then skip evaluating those interiors at samples.
   virtual bool reads_groove_interiors() const { return true; }
+  // Whether the observer reads nothing but s.t, s.dir, the slip counters and the contact blocks'
+  // friction forces (friction_force()). In a chain without internal springs those depend on
+  // the stuck blocks' positions only, so an exact per-block integrator may leave the positions
+  // of moving blocks unevaluated at samples.
+  virtual bool reads_only_friction() const { return false; }
 };
 
 }  // namespace sb

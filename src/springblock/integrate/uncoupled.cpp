@@ -1,0 +1,292 @@
+#include "springblock/integrate/uncoupled.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <queue>
+#include <stdexcept>
+#include <string>
+
+#include "springblock/integrate/damped_mode.hpp"
+
+namespace sb::event_detail {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
+
+// First zero strictly after `from` of the damped-mode trajectory with q(0) = q0, q'(0) = p0
+// (infinity if none). Underdamped: q = e^{-alpha tau} R cos(w tau - phi), zeros every pi / w.
+// Critical and overdamped: at most one zero, from q0 + P tau = 0 or tanh(k tau) = -q0 k / P.
+double next_zero(const DampedMode& m, double q0, double p0, double from) {
+  const double a = m.alpha, s = m.omega2 - a * a, P = p0 + a * q0;
+  if (q0 == 0.0 && P == 0.0) return kInf;
+  if (s > 0) {
+    const double w = std::sqrt(s);
+    const double phi = std::atan2(P / w, q0);
+    const double k = std::ceil((w * from - phi - 0.5 * kPi) / kPi);
+    double tau = (phi + 0.5 * kPi + k * kPi) / w;
+    while (tau <= from) tau += kPi / w;
+    return tau;
+  }
+  if (P == 0.0) return kInf;
+  double tau;
+  if (s == 0) {
+    tau = -q0 / P;
+  } else {
+    const double k = std::sqrt(-s), r = -q0 * k / P;
+    if (!(r > -1.0 && r < 1.0)) return kInf;
+    tau = std::atanh(r) / k;
+  }
+  return tau > from ? tau : kInf;
+}
+
+struct Block {
+  double t_ref = 0;       // start of the current moving phase
+  double x0 = 0, p0 = 0;  // deviation from the particular solution and its rate at t_ref
+  double phi = 0;         // friction force of the phase: dir f_kin, 0 in a groove
+  double t_next = kInf;   // next event (slip of a stuck block, stop of a sliding one)
+  unsigned version = 0;   // invalidates stale queue entries
+};
+
+class Solver {
+ public:
+  Solver(const Chain& c, State& s, std::vector<double>* log)
+      : c_(c), s_(s), log_(log), b_(c.N), mode_{0.5 * c.gamma, c.K_s / c.m} {}
+
+  void run(double t_end, double sample_dt, Observer& obs);
+
+ private:
+  // Particular solution of a moving block with friction phi at time t.
+  double u_p(double phi, double t) const {
+    return c_.v_slider * t - phi / c_.K_s - c_.gamma * c_.v_slider / mode_.omega2;
+  }
+  void eval(int i, double t, double& u, double& v) {
+    const Block& b = b_[i];
+    double x, xd;
+    mode_.eval(b.x0, b.p0, t - b.t_ref, x, xd);
+    ++evals_;
+    u = u_p(b.phi, t) + x;
+    v = c_.v_slider + xd;
+  }
+  // Start a moving phase of block i at time t from its current u, v (friction phi).
+  void start_moving(int i, double t, double phi) {
+    Block& b = b_[i];
+    b.t_ref = t;
+    b.phi = phi;
+    b.x0 = s_.u[i] - u_p(phi, t);
+    b.p0 = s_.v[i] - c_.v_slider;
+    // Released from rest with its pull short of kinetic friction by round-off only (|deficit|
+    // <= 1e-9 f_kin, the tolerance of switching.hpp): start from exact balance, x''(0) = 0.
+    // Otherwise a clipped pair (f_kin = f_static, released exactly at its threshold) would
+    // stop at once and be released again at the same instant, for ever.
+    if (phi != 0.0 && s_.v[i] == 0.0) {
+      const double deficit = std::copysign(1.0, phi) * (c_.K_s * (c_.v_slider * t - s_.u[i]) - phi);
+      if (deficit < 0.0 && deficit >= -1e-9 * std::fabs(phi)) b.x0 = c_.gamma * c_.v_slider / mode_.omega2;
+    }
+  }
+  double first_stop(int i);
+  double slip_time(int i, double t) const;
+  void schedule(int i, double t_next);
+  // Apply the stick/slip rules to block i at time t (after its event, or at the start).
+  void settle(int i, double t, bool event_here);
+  void materialise(double t);
+
+  const Chain& c_;
+  State& s_;
+  std::vector<double>* log_;
+  std::vector<Block> b_;
+  DampedMode mode_;
+  long long evals_ = 0;
+  double instant_ = -1;
+  long long at_instant_ = 0;
+  struct Entry {
+    double t;
+    int i;
+    unsigned version;
+    bool operator>(const Entry& o) const { return t > o.t || (t == o.t && i > o.i); }
+  };
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
+};
+
+double Solver::slip_time(int i, double t) const {
+  // Stuck: F(t') = F(t) + K_s v_s (t' - t) reaches +-f_static.
+  const double F = c_.K_s * (c_.v_slider * t - s_.u[i]), rate = c_.K_s * c_.v_slider;
+  if (rate == 0.0) return kInf;
+  const double target = rate > 0 ? c_.f_static[i] : -c_.f_static[i];
+  return t + std::max((target - F) / rate, 0.0);
+}
+
+double Solver::first_stop(int i) {
+  const Block& b = b_[i];
+  const int d = s_.dir[i];
+  const double vs = c_.v_slider, gamma = c_.gamma, w2 = mode_.omega2;
+  // x'' follows the same mode equation: its initial value and rate.
+  const double a0 = -gamma * b.p0 - w2 * b.x0, j0 = -gamma * a0 - w2 * b.p0;
+  auto g = [&](double tau, double& x, double& xd) {
+    mode_.eval(b.x0, b.p0, tau, x, xd);
+    ++evals_;
+    return d * (vs + xd);
+  };
+  auto bisect = [&](double lo, double hi) {
+    double x, xd;
+    for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(b.t_ref + hi); ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (g(mid, x, xd) > 0 ? lo : hi) = mid;
+    }
+    return b.t_ref + hi;
+  };
+  double lo = 0, x = b.x0, xd = b.p0;
+  for (int interval = 0; interval < 100000; ++interval) {
+    // Moving forward faster than the mode can ever swing back: no stop, ever. A swing that would
+    // reverse the velocity by less than 1e-12 v_s (a creeping block whose v only touches 0) is
+    // not a stop either.
+    if (d * vs > 0 && std::sqrt(xd * xd + w2 * x * x) <= d * vs * (1.0 + 1e-12)) return kInf;
+    double hi = next_zero(mode_, a0, j0, lo);
+    if (hi == kInf) {
+      // x' is monotone from here on, towards 0: g tends to d v_s.
+      if (d * vs > 0) return kInf;
+      double step = 1.0 / std::sqrt(w2 + mode_.alpha * mode_.alpha);
+      hi = lo + step;
+      while (g(hi, x, xd) > 0) {
+        lo = hi;
+        step *= 2;
+        hi = lo + step;
+      }
+      return bisect(lo, hi);
+    }
+    if (g(hi, x, xd) <= 0) return bisect(lo, hi);
+    // Without damping x' is periodic (two intervals per period) and its energy constant: no
+    // stop within the first period means none ever (a creeping block touching v = 0 at most).
+    if (mode_.alpha == 0.0 && interval >= 1) return kInf;
+    lo = hi;
+  }
+  throw std::runtime_error("uncoupled solver: no end to the sliding phase of block " + std::to_string(i));
+}
+
+void Solver::schedule(int i, double t_next) {
+  Block& b = b_[i];
+  b.t_next = t_next;
+  ++b.version;
+  if (t_next < kInf) queue_.push({t_next, i, b.version});
+}
+
+void Solver::settle(int i, double t, bool event_here) {
+  if (t != instant_) {
+    instant_ = t;
+    at_instant_ = 0;
+  }
+  const long long limit = 100LL * c_.N;
+  int made = 0;
+  const double fs = c_.f_static[i], fk = c_.f_kinetic[i];
+  for (;;) {
+    bool changed = false;
+    if (s_.dir[i] != 0) {
+      // A located stop (v reached 0), or a block at rest that cannot move against kinetic
+      // friction larger than its pull (only with mu_d > mu_s kept).
+      const double F = c_.K_s * (c_.v_slider * t - s_.u[i]);
+      const bool cannot_go = s_.v[i] == 0.0 && s_.dir[i] * F - fk < -1e-9 * fk;
+      if (event_here || cannot_go) {
+        s_.v[i] = 0.0;
+        s_.dir[i] = 0;
+        ++made, changed = true;
+      }
+    } else if (event_here) {
+      // The located crossing is the switch, even if round-off left |F| a hair below f_static.
+      const double F = c_.K_s * (c_.v_slider * t - s_.u[i]);
+      s_.dir[i] = F >= 0 ? 1 : -1;
+      s_.mark_slip(i);
+      ++made, changed = true;
+    }
+    event_here = false;
+    if (s_.dir[i] == 0) {
+      const double F = c_.K_s * (c_.v_slider * t - s_.u[i]);
+      if (std::fabs(F) > fs) {
+        s_.dir[i] = F > 0 ? 1 : -1;
+        s_.mark_slip(i);
+        ++made, changed = true;
+      }
+    }
+    if (at_instant_ + made > limit)
+      throw std::runtime_error("switching cascade: more than " + std::to_string(limit) +
+                               " stick/slip switches at t = " + std::to_string(t) +
+                               " s without time advancing (is mu_d > mu_s kept for some block?)");
+    if (!changed) break;
+  }
+  at_instant_ += made;
+  s_.switches += made;
+  if (made > 0 && log_ && (log_->empty() || log_->back() != t)) log_->push_back(t);
+  if (s_.dir[i] != 0) {
+    start_moving(i, t, s_.dir[i] * fk);
+    schedule(i, first_stop(i));
+  } else {
+    schedule(i, slip_time(i, t));
+  }
+}
+
+void Solver::materialise(double t) {
+  for (int i = 0; i < c_.N; ++i)
+    if (!c_.contact[i] || s_.dir[i] != 0) eval(i, t, s_.u[i], s_.v[i]);
+}
+
+void Solver::run(double t_end, double sample_dt, Observer& obs) {
+  const int N = c_.N;
+  const double t0 = s_.t;
+  for (int i = 0; i < N; ++i) {
+    if (!c_.contact[i]) {
+      start_moving(i, t0, 0.0);  // grooves move for ever, no events
+      continue;
+    }
+    if (s_.dir[i] != 0) {
+      start_moving(i, t0, s_.dir[i] * c_.f_kinetic[i]);
+      schedule(i, first_stop(i));
+    } else {
+      settle(i, t0, false);
+    }
+  }
+  const bool friction_only = obs.reads_only_friction();
+  auto sample = [&](double t) {
+    s_.t = t;
+    if (!friction_only) materialise(t);
+    obs.sample(c_, s_);
+  };
+  sample(t0);
+  long long k = static_cast<long long>(std::floor(t0 / sample_dt)) + 1;
+  while (!obs.wants_stop()) {
+    // Drop entries made stale by a later reschedule.
+    while (!queue_.empty() && queue_.top().version != b_[queue_.top().i].version) queue_.pop();
+    const double t_event = queue_.empty() ? kInf : queue_.top().t;
+    const double t_sample = static_cast<double>(k) * sample_dt;
+    if (t_event <= t_sample && t_event <= t_end) {
+      const int i = queue_.top().i;
+      queue_.pop();
+      // The block's state at its event: a sliding block is at rest there, a stuck one unmoved.
+      if (s_.dir[i] != 0) {
+        double u, v;
+        eval(i, t_event, u, v);
+        s_.u[i] = u;
+        s_.v[i] = 0.0;
+      }
+      settle(i, t_event, true);
+      ++s_.steps;
+      continue;
+    }
+    if (t_sample > t_end) break;
+    sample(t_sample);
+    ++k;
+  }
+  const double t_stop = obs.wants_stop() ? s_.t : t_end;
+  s_.t = t_stop;
+  materialise(t_stop);
+  s_.rhs_evals += (evals_ + N - 1) / N;
+}
+
+}  // namespace
+
+void run_uncoupled(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs,
+                   std::vector<double>* log) {
+  if (c.K_int != 0.0) throw std::logic_error("run_uncoupled: the chain has internal springs");
+  Solver(c, s, log).run(t_end, sample_dt, obs);
+}
+
+}  // namespace sb::event_detail

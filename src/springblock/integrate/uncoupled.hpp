@@ -1,0 +1,40 @@
+#pragma once
+// Exact event-driven solution of a chain without internal springs (K_int = 0).
+//
+// Every block is then its own one-degree-of-freedom system, solved in closed form and advanced
+// on its own: no shared step size, and a block that creeps or rests costs nothing between its
+// own events. In each phase of block i
+//   stuck:   u = const, v = 0; its force K_s (v_s t - u) reaches f_static at a closed-form time;
+//   moving:  m u'' + m gamma u' + K_s u = K_s v_s t - phi, with phi = dir f_kin (sliding) or 0
+//            (groove). Around the particular solution u_p = v_s t - phi / K_s - gamma v_s / omega^2
+//            the deviation x = u - u_p is one damped mode (damped_mode.hpp), so u and v are
+//            closed form at any time.
+// A sliding block stops at the first tau > 0 with dir (v_s + x'(tau)) <= 0. x' is monotone
+// between consecutive zeros of x'' (itself a damped-mode trajectory, whose zeros are closed form),
+// so each such interval holds at most one root, found by bisection to round-off in t; no grid and
+// no grazing bound are needed. If the block moves forward (dir v_s > 0) and the mode's energy
+// bound sqrt(x'^2 + omega^2 x^2) (never increasing) is below v_s (1 + 1e-12), it never stops: a
+// creeping block (mu_d clipped to mu_s) has no further event at all, also without damping, where
+// its velocity touches 0 once per period. A release whose pull falls short of kinetic friction
+// by round-off only starts from exact force balance (same tolerance as switching.hpp).
+// At an event the stick/slip rules of switching.hpp apply to the one block (a stopped block
+// slides on if its force exceeds f_static; a released block that cannot move against a larger
+// kinetic friction stops again), with the same cascade guard.
+// Samples: stuck blocks hold their u; moving blocks are evaluated at the sample time unless the
+// observer reads only friction forces (Observer::reads_only_friction()), which for K_int = 0
+// depend on the stuck blocks' u and on dir alone.
+#include <vector>
+
+#include "springblock/model.hpp"
+#include "springblock/observe/observer.hpp"
+#include "springblock/state.hpp"
+
+namespace sb::event_detail {
+
+// Runs the chain (c.K_int must be 0) from s to t_end. Switch instants are appended to log if
+// given. s.steps counts events, s.rhs_evals the closed-form block evaluations divided by N
+// (whole-chain equivalents, comparable with the steppers' counts).
+void run_uncoupled(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs,
+                   std::vector<double>* log);
+
+}  // namespace sb::event_detail
