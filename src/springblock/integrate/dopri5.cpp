@@ -6,11 +6,14 @@
 
 namespace sb::event_detail {
 
-Dopri5::Dopri5(int N) : N_(N), store_(14 * static_cast<std::size_t>(N)), ut_(N), vt_(N), u1_(N), v1_(N) {
+Dopri5::Dopri5(int N) : N_(N), store_(14 * static_cast<std::size_t>(N)), ut_(N), u1_(N) {
   for (int s = 0; s < 14; ++s) k_[s] = store_.data() + static_cast<std::size_t>(s) * N;
 }
 
-void Dopri5::set_frozen(const double* u) { std::copy(u, u + N_, ut_.begin()); }
+void Dopri5::set_frozen(const double* u) {
+  std::copy(u, u + N_, ut_.begin());
+  std::copy(u, u + N_, u1_.begin());  // stage 7 reads the neighbours' positions from u1
+}
 
 void Dopri5::accept_fsal() {
   std::swap(k_[0], k_[6]);
@@ -58,7 +61,7 @@ double Dopri5::error_norm(const std::vector<Span>& spans, const double* u, const
     worst = std::max(worst, span_error(sp.lo, sp.hi, h_, k_[0], k_[2], k_[3], k_[4], k_[5], k_[6], u,
                                        u1_.data(), mobile, atol_u, rtol));
     worst = std::max(worst, span_error(sp.lo, sp.hi, h_, k_[7], k_[9], k_[10], k_[11], k_[12], k_[13], v,
-                                       v1_.data(), mobile, atol_v, rtol));
+                                       k_[6], mobile, atol_v, rtol));
   }
   return worst;
 }

@@ -61,10 +61,11 @@ class Dopri5 {
 
   // The continuous extension of the last attempted step at theta in [0, 1].
   double dense_u(int i, double theta) const { return dense(u0_, u1_.data(), 0, i, theta); }
-  double dense_v(int i, double theta) const { return dense(v0_, v1_.data(), 7, i, theta); }
+  double dense_v(int i, double theta) const { return dense(v0_, k_[6], 7, i, theta); }
 
   const double* u1() const { return u1_.data(); }
-  const double* v1() const { return v1_.data(); }
+  // The new velocities are stage 7's velocity slope (c7 = 1, a7 = b): stored once, as k_[6].
+  const double* v1() const { return k_[6]; }
   // Acceleration at the start of the step (stage 1).
   const double* a0() const { return k_[7]; }
 
@@ -76,7 +77,10 @@ class Dopri5 {
   int N_;
   std::vector<double> store_;  // 14 stage arrays: k_[0..6] = u' stages (velocities), k_[7..13] = v' (accelerations)
   double* k_[14];
-  std::vector<double> ut_, vt_, u1_, v1_;
+  // Trial positions and the step's end positions; the frozen blocks' entries hold their
+  // constant positions (set_frozen). Trial velocities are written straight into the velocity
+  // stage arrays k_[s], which is what they are.
+  std::vector<double> ut_, u1_;
   double h_ = 0;
   const double* u0_ = nullptr;
   const double* v0_ = nullptr;
@@ -126,49 +130,44 @@ double Dopri5::attempt(const Chain& c, const std::vector<Span>& spans, const dou
                        double atol_v, double rtol) {
   using T = Dp5Tableau;
   double* ut = ut_.data();
-  double* vt = vt_.data();
   double* u1 = u1_.data();
-  double* v1 = v1_.data();
   double* const* K = k_;  // K[s] velocity stage s (= the trial v), K[7+s] acceleration stage s
-  auto stage = [&](int s, double cs) {
-    for (const Span& sp : spans) {
-      std::copy(vt + sp.lo, vt + sp.hi, K[s] + sp.lo);
-      chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, ut, vt, t + cs * h, mobile, f_kin, K[7 + s]);
-    }
+  // Stage s from the trial positions ut and the trial velocities already in K[s].
+  auto stage = [&](int s, double cs, const double* pos) {
+    for (const Span& sp : spans)
+      chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, pos, K[s], t + cs * h, mobile, f_kin, K[7 + s]);
   };
   for (const Span& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a21, K[0]);
-    comb(sp.lo, sp.hi, vt, v, h, T::a21, K[7]);
+    comb(sp.lo, sp.hi, K[1], v, h, T::a21, K[7]);
   }
-  stage(1, T::c2);
+  stage(1, T::c2, ut);
   for (const Span& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a31, K[0], T::a32, K[1]);
-    comb(sp.lo, sp.hi, vt, v, h, T::a31, K[7], T::a32, K[8]);
+    comb(sp.lo, sp.hi, K[2], v, h, T::a31, K[7], T::a32, K[8]);
   }
-  stage(2, T::c3);
+  stage(2, T::c3, ut);
   for (const Span& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a41, K[0], T::a42, K[1], T::a43, K[2]);
-    comb(sp.lo, sp.hi, vt, v, h, T::a41, K[7], T::a42, K[8], T::a43, K[9]);
+    comb(sp.lo, sp.hi, K[3], v, h, T::a41, K[7], T::a42, K[8], T::a43, K[9]);
   }
-  stage(3, T::c4);
+  stage(3, T::c4, ut);
   for (const Span& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a51, K[0], T::a52, K[1], T::a53, K[2], T::a54, K[3]);
-    comb(sp.lo, sp.hi, vt, v, h, T::a51, K[7], T::a52, K[8], T::a53, K[9], T::a54, K[10]);
+    comb(sp.lo, sp.hi, K[4], v, h, T::a51, K[7], T::a52, K[8], T::a53, K[9], T::a54, K[10]);
   }
-  stage(4, T::c5);
+  stage(4, T::c5, ut);
   for (const Span& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a61, K[0], T::a62, K[1], T::a63, K[2], T::a64, K[3], T::a65, K[4]);
-    comb(sp.lo, sp.hi, vt, v, h, T::a61, K[7], T::a62, K[8], T::a63, K[9], T::a64, K[10], T::a65, K[11]);
+    comb(sp.lo, sp.hi, K[5], v, h, T::a61, K[7], T::a62, K[8], T::a63, K[9], T::a64, K[10], T::a65, K[11]);
   }
-  stage(5, 1.0);
+  stage(5, 1.0, ut);
+  // The 5th-order solution; stage 7 is evaluated at it (c7 = 1, a7 = b): FSAL.
   for (const Span& sp : spans) {
     comb(sp.lo, sp.hi, u1, u, h, T::b1, K[0], T::b3, K[2], T::b4, K[3], T::b5, K[4], T::b6, K[5]);
-    comb(sp.lo, sp.hi, v1, v, h, T::b1, K[7], T::b3, K[9], T::b4, K[10], T::b5, K[11], T::b6, K[12]);
-    // Stage 7 is evaluated at the new point (c7 = 1, a7 = b): FSAL.
-    std::copy(u1 + sp.lo, u1 + sp.hi, ut + sp.lo);
-    std::copy(v1 + sp.lo, v1 + sp.hi, vt + sp.lo);
+    comb(sp.lo, sp.hi, K[6], v, h, T::b1, K[7], T::b3, K[9], T::b4, K[10], T::b5, K[11], T::b6, K[12]);
   }
-  stage(6, 1.0);
+  stage(6, 1.0, u1);
   h_ = h;
   u0_ = u;
   v0_ = v;
