@@ -10,30 +10,16 @@
 #include <cmath>
 #include <vector>
 
+#include "hand_chain.hpp"
+
 namespace {
 
 using sb::event_detail::ActiveSet;
 
 // Ten blocks: pawls 0-2 and 5-7, grooves 3-4 (held by two stuck blocks) and 8-9 (free end).
 sb::Chain grooved(double gamma) {
-  sb::Chain c;
-  c.N = 10;
-  c.K_s = 1e4;
-  c.K_int = 7.3e5;
-  c.m = 2.4e-6;
-  c.gamma = gamma;
-  c.v_slider = 5e-4;
-  c.F_n = 2.0;
-  c.contact = {1, 1, 1, 0, 0, 1, 1, 1, 0, 0};
-  c.n_contact = 6;
-  c.F_load = 12.0;
-  for (int i = 0; i < c.N; ++i) {
-    c.mu_s.push_back(c.contact[i] ? 1.0 : 0.0);
-    c.mu_d.push_back(c.contact[i] ? 0.5 : 0.0);
-    c.f_static.push_back(c.mu_s.back() * c.F_n);
-    c.f_kinetic.push_back(c.mu_d.back() * c.F_n);
-  }
-  return c;
+  return sbtest::hand_chain({1, 1, 1, 0, 0, 1, 1, 1, 0, 0}, 7.3e5, gamma, std::vector<double>(10, 1.0),
+                            std::vector<double>(10, 0.5));
 }
 
 const double kAtolU = 4e-13, kAtolV = 4e-13 * 6.45e4;

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "hand_chain.hpp"
 #include "springblock/integrate/quiet_phase.hpp"
 #include "springblock/integrate/rk4.hpp"
 #include "springblock/observe/friction_observer.hpp"
@@ -110,25 +111,8 @@ TEST(EventIntegrator, UncoupledExactSolutionIsTheClosedFormToRoundOff) {
 
 // Groove chain N = 10 with pattern 3 pawls, 2 grooves; stuck blocks held by huge thresholds.
 sb::Chain grooved_chain(double gamma) {
-  sb::Chain c;
-  c.N = 10;
-  c.K_s = 1e4;
-  c.K_int = 7.3e5;
-  c.m = 2.4e-6;
-  c.gamma = gamma;
-  c.v_slider = 5e-4;
-  c.F_n = 2.0;
-  c.contact = {1, 1, 1, 0, 0, 1, 1, 1, 0, 0};
-  c.n_contact = 6;
-  c.F_load = c.F_n * 6;
-  for (int i = 0; i < c.N; ++i) {
-    const double big = c.contact[i] ? 1e9 : 0.0;
-    c.mu_s.push_back(big);
-    c.mu_d.push_back(0);
-    c.f_static.push_back(big);
-    c.f_kinetic.push_back(0);
-  }
-  return c;
+  const std::vector<std::uint8_t> contact = {1, 1, 1, 0, 0, 1, 1, 1, 0, 0};
+  return sbtest::hand_chain(contact, 7.3e5, gamma, std::vector<double>(10, 1e9 / 2.0), std::vector<double>(10, 0.0));
 }
 
 TEST(EventIntegrator, QuietPhaseMatchesFineStepping) {

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "hand_chain.hpp"
 #include "springblock/integrate/event_driven.hpp"
 
 namespace {
@@ -43,26 +44,8 @@ class SumObserver final : public sb::Observer {
 // Eight blocks of the paper's size: one groove (3), one creeping pair (5: mu_d = mu_s), one
 // deep drop (6: mu_d = 0.1), the others spread around mu_s = 1, mu_d = 0.5.
 sb::Chain uncoupled(double gamma) {
-  sb::Chain c;
-  c.N = 8;
-  c.K_s = 1e4;
-  c.K_int = 0;
-  c.m = 2.4e-6;
-  c.gamma = gamma;
-  c.v_slider = 5e-4;
-  c.F_n = 2.0;
-  c.contact = {1, 1, 1, 0, 1, 1, 1, 1};
-  c.n_contact = 7;
-  c.F_load = 14.0;
-  const double ms[] = {1.0, 0.93, 1.12, 0, 0.87, 0.95, 1.05, 0.99};
-  const double md[] = {0.5, 0.47, 0.55, 0, 0.52, 0.95, 0.1, 0.3};
-  for (int i = 0; i < c.N; ++i) {
-    c.mu_s.push_back(ms[i]);
-    c.mu_d.push_back(md[i]);
-    c.f_static.push_back(ms[i] * c.F_n);
-    c.f_kinetic.push_back(md[i] * c.F_n);
-  }
-  return c;
+  return sbtest::hand_chain({1, 1, 1, 0, 1, 1, 1, 1}, 0.0, gamma, {1.0, 0.93, 1.12, 0, 0.87, 0.95, 1.05, 0.99},
+                            {0.5, 0.47, 0.55, 0, 0.52, 0.95, 0.1, 0.3});
 }
 
 sb::State start(const sb::Chain& c) {
