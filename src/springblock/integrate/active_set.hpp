@@ -8,7 +8,7 @@
 //   * Active   if it holds a sliding block: stepped by Dormand-Prince;
 //   * Ringing  if it is grooves only and still carries a transient: stepped too (its own blocks
 //              only, so a groove far from the slip costs n, not N);
-//   * Settled  if it is grooves only and its transient is below the tolerance (see `quiet_u`):
+//   * Settled  if it is grooves only and its transient is below the tolerance (see below):
 //              u = A + B t exactly, the affine particular solution (a tridiagonal solve).
 // A stuck block with no stepped neighbour feels an affine force a + b t, so its threshold
 // crossing is closed form; only stuck blocks next to a stepped run need the step's dense output.
