@@ -74,6 +74,13 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   SampleClock clock{sample_dt, static_cast<long long>(std::floor(s.t / sample_dt)) + 1};
   bool stage1_valid = false;
 
+  // The stepped blocks take the end of the last attempted step.
+  auto take_step_end = [&](const std::vector<event_detail::Span>& spans) {
+    for (const auto& sp : spans) {
+      std::copy(dp.u1() + sp.lo, dp.u1() + sp.hi, s.u.begin() + sp.lo);
+      std::copy(dp.v1() + sp.lo, dp.v1() + sp.hi, s.v.begin() + sp.lo);
+    }
+  };
   auto sample_if_due = [&] {
     if (s.t == clock.next()) {
       active.materialise(s.t, s.u.data(), s.v.data());
@@ -109,7 +116,8 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
       s.t = next.t;
       if (next.block >= 0) sw.flag(next.block);
       if (sw.settle(c, s) > 0 && log_) log_->push_back(s.t);
-      // Every groove is exact at s.t: none is settled yet, so the rebuild classifies afresh.
+      // Every groove is exact at s.t. Grooves settled before the quiet phase stay settled: their
+      // stuck ends have not moved, so their A + B t is still their path.
       reclassify();
       stage1_valid = false;
       sample_if_due();
@@ -150,10 +158,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
         dp.attempt<Coupled, Damped>(c, spans, s.u.data(), s.v.data(), s.t, h_event, sw.mobile(), sw.f_kin(),
                                     atol_u, atol_v, rtol);
         s.rhs_evals += 6;
-        for (const auto& sp : spans) {
-          std::copy(dp.u1() + sp.lo, dp.u1() + sp.hi, s.u.begin() + sp.lo);
-          std::copy(dp.v1() + sp.lo, dp.v1() + sp.hi, s.v.begin() + sp.lo);
-        }
+        take_step_end(spans);
         s.t = (theta == 1.0 && clipped) ? t_stop : s.t + h_event;
         ++s.steps;
       }
@@ -165,10 +170,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
       sample_if_due();
       continue;
     }
-    for (const auto& sp : spans) {
-      std::copy(dp.u1() + sp.lo, dp.u1() + sp.hi, s.u.begin() + sp.lo);
-      std::copy(dp.v1() + sp.lo, dp.v1() + sp.hi, s.v.begin() + sp.lo);
-    }
+    take_step_end(spans);
     dp.accept_fsal();
     s.t = clipped ? t_stop : s.t + h_try;
     ++s.steps;

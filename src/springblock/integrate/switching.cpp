@@ -15,6 +15,45 @@ void Switching::sync(const Chain& c, const State& s) {
   }
 }
 
+int apply_rules(const Chain& c, State& s, int i, bool event_here) {
+  int made = 0;
+  if (s.dir[i] != 0) {
+    const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
+    const double dv = s.dir[i] * s.v[i];
+    // At rest and pulled clearly less than kinetic friction: it cannot move in its
+    // direction. With mu_d = mu_s a block released at its threshold has net force zero up
+    // to round-off; the slider's loading then accelerates it, so a round-off deficit must
+    // not send it back to rest at the same instant (that would be an endless cascade).
+    const bool cannot_go = dv == 0.0 && s.dir[i] * F - c.f_kinetic[i] < -1e-9 * c.f_kinetic[i];
+    if (event_here || dv < 0.0 || cannot_go) {
+      s.v[i] = 0.0;
+      s.dir[i] = 0;
+      ++made;
+    }
+  } else if (event_here) {
+    // The located crossing is the switch, even if round-off left |F| a hair below f_static.
+    const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
+    s.dir[i] = F >= 0 ? 1 : -1;
+    s.mark_slip(i);
+    return 1;
+  }
+  if (s.dir[i] == 0) {
+    const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
+    if (std::fabs(F) > c.f_static[i]) {
+      s.dir[i] = F > 0 ? 1 : -1;
+      s.mark_slip(i);
+      ++made;
+    }
+  }
+  return made;
+}
+
+void throw_cascade(std::int64_t limit, double t) {
+  throw std::runtime_error("switching cascade: more than " + std::to_string(limit) +
+                           " stick/slip switches at t = " + std::to_string(t) +
+                           " s without time advancing (is mu_d > mu_s kept for some block?)");
+}
+
 int Switching::settle(const Chain& c, State& s) {
   if (s.t != instant_) {
     instant_ = s.t;
@@ -27,47 +66,14 @@ int Switching::settle(const Chain& c, State& s) {
     changed = false;
     for (int i = 0; i < c.N; ++i) {
       if (!c.contact[i]) continue;
-      const bool event_here = first_pass && flagged_[i];
-      if (s.dir[i] != 0) {
-        const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
-        const double dv = s.dir[i] * s.v[i];
-        // At rest and pulled clearly less than kinetic friction: it cannot move in its
-        // direction. With mu_d = mu_s a block released at its threshold has net force zero up
-        // to round-off; the slider's loading then accelerates it, so a round-off deficit must
-        // not send it back to rest at the same instant (that would be an endless cascade).
-        const bool cannot_go = dv == 0.0 && s.dir[i] * F - c.f_kinetic[i] < -1e-9 * c.f_kinetic[i];
-        if (event_here || dv < 0.0 || cannot_go) {
-          s.v[i] = 0.0;
-          s.dir[i] = 0;
-          ++made;
-          changed = true;
-        }
-      } else if (event_here) {
-        // The located crossing is the switch, even if round-off left |F| a hair below f_static.
-        const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
-        s.dir[i] = F >= 0 ? 1 : -1;
-        s.mark_slip(i);
-        ++made;
-        changed = true;
-        continue;
-      }
-      if (s.dir[i] == 0) {
-        const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
-        if (std::fabs(F) > c.f_static[i]) {
-          s.dir[i] = F > 0 ? 1 : -1;
-          s.mark_slip(i);
-          ++made;
-          changed = true;
-        }
-      }
+      const int m = apply_rules(c, s, i, first_pass && flagged_[i]);
+      made += m;
+      changed = changed || m > 0;
     }
     if (first_pass)
       for (auto& f : flagged_) f = 0;
     first_pass = false;
-    if (at_instant_ + made > limit)
-      throw std::runtime_error("switching cascade: more than " + std::to_string(limit) +
-                               " stick/slip switches at t = " + std::to_string(s.t) +
-                               " s without time advancing (is mu_d > mu_s kept for some block?)");
+    if (at_instant_ + made > limit) throw_cascade(limit, s.t);
   }
   at_instant_ += made;
   s.switches += made;

@@ -18,6 +18,12 @@
 
 namespace sb::event_detail {
 
+// The rules above for contact block i at s.t, one pass; returns the switches made (a stop may
+// be followed by a restart in the same pass). Shared with the per-block solver (uncoupled.hpp).
+int apply_rules(const Chain& c, State& s, int i, bool event_here);
+// Reports a switching cascade: more than `limit` switches at time t.
+[[noreturn]] void throw_cascade(std::int64_t limit, double t);
+
 class Switching {
  public:
   explicit Switching(int N) : flagged_(N, 0), mobile_(N), f_kin_(N) {}

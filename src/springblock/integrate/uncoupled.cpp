@@ -8,6 +8,7 @@
 #include <string>
 
 #include "springblock/integrate/damped_mode.hpp"
+#include "springblock/integrate/switching.hpp"
 
 namespace sb::event_detail {
 namespace {
@@ -45,7 +46,6 @@ struct Block {
   double t_ref = 0;       // start of the current moving phase
   double x0 = 0, p0 = 0;  // deviation from the particular solution and its rate at t_ref
   double phi = 0;         // friction force of the phase: dir f_kin, 0 in a groove
-  double t_next = kInf;   // next event (slip of a stuck block, stop of a sliding one)
   unsigned version = 0;   // invalidates stale queue entries
 };
 
@@ -166,7 +166,6 @@ double Solver::first_stop(int i) {
 
 void Solver::schedule(int i, double t_next) {
   Block& b = b_[i];
-  b.t_next = t_next;
   ++b.version;
   if (t_next < kInf) queue_.push({t_next, i, b.version});
 }
@@ -177,47 +176,21 @@ void Solver::settle(int i, double t, bool event_here) {
     at_instant_ = 0;
   }
   const long long limit = 100LL * c_.N;
+  s_.t = t;
   int made = 0;
-  const double fs = c_.f_static[i], fk = c_.f_kinetic[i];
+  // The chain's rules (switching.hpp) on this one block until it stops changing.
   for (;;) {
-    bool changed = false;
-    if (s_.dir[i] != 0) {
-      // A located stop (v reached 0), or a block at rest that cannot move against kinetic
-      // friction larger than its pull (only with mu_d > mu_s kept).
-      const double F = c_.K_s * (c_.v_slider * t - s_.u[i]);
-      const bool cannot_go = s_.v[i] == 0.0 && s_.dir[i] * F - fk < -1e-9 * fk;
-      if (event_here || cannot_go) {
-        s_.v[i] = 0.0;
-        s_.dir[i] = 0;
-        ++made, changed = true;
-      }
-    } else if (event_here) {
-      // The located crossing is the switch, even if round-off left |F| a hair below f_static.
-      const double F = c_.K_s * (c_.v_slider * t - s_.u[i]);
-      s_.dir[i] = F >= 0 ? 1 : -1;
-      s_.mark_slip(i);
-      ++made, changed = true;
-    }
+    const int m = apply_rules(c_, s_, i, event_here);
     event_here = false;
-    if (s_.dir[i] == 0) {
-      const double F = c_.K_s * (c_.v_slider * t - s_.u[i]);
-      if (std::fabs(F) > fs) {
-        s_.dir[i] = F > 0 ? 1 : -1;
-        s_.mark_slip(i);
-        ++made, changed = true;
-      }
-    }
-    if (at_instant_ + made > limit)
-      throw std::runtime_error("switching cascade: more than " + std::to_string(limit) +
-                               " stick/slip switches at t = " + std::to_string(t) +
-                               " s without time advancing (is mu_d > mu_s kept for some block?)");
-    if (!changed) break;
+    made += m;
+    if (at_instant_ + made > limit) throw_cascade(limit, t);
+    if (m == 0) break;
   }
   at_instant_ += made;
   s_.switches += made;
   if (made > 0 && log_ && (log_->empty() || log_->back() != t)) log_->push_back(t);
   if (s_.dir[i] != 0) {
-    start_moving(i, t, s_.dir[i] * fk);
+    start_moving(i, t, s_.dir[i] * c_.f_kinetic[i]);
     schedule(i, first_stop(i));
   } else {
     schedule(i, slip_time(i, t));
