@@ -65,7 +65,41 @@ void bm_uncoupled(benchmark::State& st, sb::Method m) {
   time_repetition(st, s);
 }
 
+// The modal-run specialisation (active_set.hpp: mobile runs of up to modal_max_run blocks are
+// propagated by their modes, not stepped), at the reproduction targets' tol 1e-9, against
+// modal_max_run = 0 (every run stepped). Scenes where short runs dominate: fig2's interacting
+// chain at (mu_d)_m = 0.9 (creeping blocks), damped and undamped, N = 200, 2 t0; one-block
+// grooves (periodic:1,1); and periodic:10,10, where slipping runs are ~10-20 blocks long.
+void bm_modal(benchmark::State& st, std::string pattern, double gamma_per_s, double mu_d, int modal_max_run) {
+  sb::Scene s;
+  const bool fig2 = mu_d > 0.5;
+  s.geometry = fig2 ? sb::ChainGeometry{200, 0.04} : sb::ChainGeometry{360, 0.072};
+  s.pattern = sb::parse_pattern(pattern);
+  s.material.gamma_per_s = gamma_per_s;
+  s.friction.mu_d_mean = mu_d;
+  s.run.method = sb::Method::Event;
+  s.run.tol = 1e-9;
+  s.run.modal_max_run = modal_max_run;
+  s.run.duration_t0 = fig2 ? 2.0 : 1.0;
+  s.seed = 3;
+  s.reps = 1;
+  sb::validate(s);
+  time_repetition(st, s);
+}
+
 }  // namespace
+
+#define SB_MODAL(id, pattern, gamma, mu_d)                                                              \
+  BENCHMARK_CAPTURE(bm_modal, id##_m0, pattern, gamma, mu_d, 0)                                       \
+      ->Name("modal/" #id "/modal_max_run0")->Unit(benchmark::kSecond)->Iterations(1);                \
+  BENCHMARK_CAPTURE(bm_modal, id##_m2, pattern, gamma, mu_d, 2)                                       \
+      ->Name("modal/" #id "/modal_max_run2")->Unit(benchmark::kSecond)->Iterations(1);                \
+  BENCHMARK_CAPTURE(bm_modal, id##_m4, pattern, gamma, mu_d, 4)                                       \
+      ->Name("modal/" #id "/modal_max_run4")->Unit(benchmark::kSecond)->Iterations(1);
+SB_MODAL(fig2_damped_r09, "smooth", 1e4, 0.9)
+SB_MODAL(fig2_undamped_r09, "smooth", 0.0, 0.9)
+SB_MODAL(periodic_1_1, "periodic:1,1", 1e4, 0.5)
+SB_MODAL(periodic_10_10, "periodic:10,10", 1e4, 0.5)
 
 BENCHMARK_CAPTURE(bm_uncoupled, rk4, sb::Method::RK4)
     ->Name("method/kint0_r0.9_N200/rk4")->Unit(benchmark::kSecond)->Iterations(1);

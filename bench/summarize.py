@@ -58,7 +58,7 @@ def methods_table(path):
     # Fixed-iteration benchmarks carry "/iterations:1" in their run name.
     rows = {name.split("/iterations:")[0]: c for name, c in medians(path).items()}
     print("\nOne repetition, 1 t0, N = 360, seed 3 (median wall time)")
-    scenes = sorted({name.split("/")[1] for name in rows})
+    scenes = sorted({name.split("/")[1] for name in rows if name.startswith("method/")})
     for sc in scenes:
         rk4 = rows.get(f"method/{sc}/rk4")
         events = sorted(k for k in rows if k.startswith(f"method/{sc}/event"))
@@ -71,6 +71,23 @@ def methods_table(path):
             print(f"{sc:22s} rk4 {rk4['real_time']:8.2f} s   {setting:15s} {ev['real_time']:7.3f} s   "
                   f"ratio x{rk4['real_time'] / ev['real_time']:.0f}   rhs evals {rk4['rhs_evals']:.3g} / "
                   f"{ev['rhs_evals']:.3g}   mu_s {rk4['mu_s']:.5f} / {ev['mu_s']:.5f}")
+
+    modal_table(rows)
+
+
+def modal_table(rows):
+    """Short runs propagated by their modes (modal_max_run > 0) against stepping every run."""
+    scenes = sorted({name.split("/")[1] for name in rows if name.startswith("modal/")})
+    if scenes:
+        print("\nModal runs, event tol 1e-9, one repetition, seed 3 (median wall time)")
+    for sc in scenes:
+        base = rows.get(f"modal/{sc}/modal_max_run0")
+        for name in sorted(k for k in rows if k.startswith(f"modal/{sc}/")):
+            r = rows[name]
+            ratio = f"x{base['real_time'] / r['real_time']:.2f}" if base else "?"
+            print(f"{sc:22s} {name.split('/')[-1]:16s} {r['real_time']:7.3f} s   {ratio:7s} switches "
+                  f"{r['switches']:.3g}   mu_s {r['mu_s']:.5f}")
+
 
 if __name__ == "__main__":
     kernel_table(sys.argv[1])

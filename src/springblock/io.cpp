@@ -71,6 +71,7 @@ nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const 
           {"method", method_name(scene.run.method)},
           {"dt", scene.run.dt_s},
           {"tol", scene.run.tol},
+          {"modal_max_run", scene.run.modal_max_run},
           {"duration", scene.duration()},
           {"wall_seconds", r.wall_s},
           {"threads", r.threads},

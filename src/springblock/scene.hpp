@@ -37,6 +37,9 @@ struct RunControl {
   Method method = Method::RK4;
   double dt_s = 1e-7;        // RK4 step (the paper's 1e-4 ms)
   double tol = 1e-9;         // event method: relative error tolerance
+  // event method: mobile runs of up to this many blocks are propagated exactly by their modes
+  // rather than stepped (0: step every run). The default is the measured optimum (bench_methods).
+  int modal_max_run = 2;
   // Run length in units of t0 = (mu_s)_m F_n / (K_s v), the time the slider needs to load an
   // average block to its threshold. Scaling with t0 keeps the number of stick-slip cycles the
   // same when the contact fraction (hence F_n) changes. duration_s > 0 overrides.

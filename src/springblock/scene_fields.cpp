@@ -108,6 +108,12 @@ const std::vector<Entry>& entries() {
        [](Scene& s, auto& k, auto& v) { s.run.dt_s = parse_quantity(v, Dimension::Time, k); }},
       {{"tol", "event method relative tolerance (default 1e-9)", "1e-9"},
        [](Scene& s, auto& k, auto& v) { s.run.tol = number(k, v); }},
+      {{"modal_max_run", "event method: mobile runs of up to this many blocks are solved exactly by their modes, not stepped (default 2; 0 steps all)", "2"},
+       [](Scene& s, auto& k, auto& v) {
+         const auto n = integer(k, v);
+         if (n < 0 || n > 64) throw InputError(k, "modal_max_run = " + v + " is outside [0, 64]");
+         s.run.modal_max_run = static_cast<int>(n);
+       }},
       {{"duration", "simulated time: a time (e.g. 1s) or a multiple of t0 (e.g. 4t0, the default)", "4t0"},
        [](Scene& s, auto& k, auto& v) {
          if (v.size() > 2 && v.substr(v.size() - 2) == "t0") {

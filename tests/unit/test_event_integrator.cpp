@@ -10,6 +10,7 @@
 #include <future>
 #include <stdexcept>
 #include <thread>
+#include <string>
 #include <vector>
 
 #include "hand_chain.hpp"
@@ -236,6 +237,49 @@ TEST(EventIntegrator, FastForwardAgreesWithStepping) {
   EXPECT_NEAR(a.mu_s, b.mu_s, 1e-4);
   EXPECT_DOUBLE_EQ(a.t_peak, b.t_peak);  // both on the same sample grid
   EXPECT_LT(a.rhs * 100, b.rhs);
+}
+
+TEST(EventIntegrator, ModalRunsAgreeWithStepping) {
+  // Short runs propagated by their modes (modal_runs.hpp) against the same integrator stepping
+  // every run, on one-block grooves (each groove beside a slipping pawl is a short run) with
+  // damping and without. The switching instants must agree to the stepper's own accuracy: the
+  // same bound as FastForwardAgreesWithStepping, whose reference is also the stepped run.
+  for (const char* damping : {"damped", "undamped"}) {
+    sb::Scene sc = small_scene(40, "periodic:1,1");
+    if (std::string(damping) == "undamped") sc.material.gamma_per_s = 0;
+    sb::EventDriven modal(1e-9, true), stepped(1e-11, true);
+    modal.set_modal_max_run(4);
+    stepped.set_modal_max_run(0);
+    std::vector<double> log_m, log_s;
+    modal.set_switch_log(&log_m);
+    stepped.set_switch_log(&log_s);
+    const Peak a = first_peak(sc, modal), b = first_peak(sc, stepped);
+    std::printf("periodic:1,1 N=40 %s: modal mu_s %.12f t %.9g rhs %lld | stepped mu_s %.12f t %.9g rhs %lld\n",
+                damping, a.mu_s, a.t_peak, (long long)a.rhs, b.mu_s, b.t_peak, (long long)b.rhs);
+    ASSERT_EQ(log_m.size(), log_s.size()) << damping;
+    ASSERT_GE(log_m.size(), 4u);
+    for (std::size_t k = 0; k < log_m.size(); ++k)
+      EXPECT_NEAR(log_m[k], log_s[k], 1e-8 * log_m[k]) << damping << " switch " << k;
+    EXPECT_NEAR(a.mu_s, b.mu_s, 1e-4) << damping;
+    EXPECT_LT(a.rhs, b.rhs) << damping;  // the modal runs take no steps
+  }
+}
+
+TEST(EventIntegrator, CreepingBlocksInModalRunsDoNotStutter) {
+  // With (mu_d)_m = 0.9 and the clip policy about one block in six has mu_d = mu_s: once it
+  // slides it creeps, and without damping its velocity touches zero once per period. The modal
+  // runs do not stop it at such touches (dir v must fall below -1e-12 v_s), which is what keeps
+  // the undamped case cheap; the first peak must not move by more than the stepper's accuracy.
+  sb::Scene sc = small_scene(40, "smooth");
+  sc.material.gamma_per_s = 0;
+  sc.friction.mu_d_mean = 0.9;
+  sb::EventDriven modal(1e-9, true), stepped(1e-11, true);
+  modal.set_modal_max_run(2);
+  stepped.set_modal_max_run(0);
+  const Peak a = first_peak(sc, modal), b = first_peak(sc, stepped);
+  std::printf("smooth N=40 r=0.9 undamped: modal mu_s %.12f t %.9g | stepped mu_s %.12f t %.9g\n", a.mu_s,
+              a.t_peak, b.mu_s, b.t_peak);
+  EXPECT_NEAR(a.mu_s, b.mu_s, 1e-4);
 }
 
 TEST(EventIntegrator, FirstPeakWithinRk4ConvergenceTrend) {

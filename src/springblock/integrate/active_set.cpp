@@ -30,16 +30,24 @@ void solve_tridiag(std::vector<double>& diag, std::vector<double>& off, std::vec
 
 }  // namespace
 
-ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v)
+ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v, int modal_max_run,
+                     double t_end)
     : N_(c.N),
       K_int_(c.K_int),
       settle_grooves_(settle_grooves),
+      modal_max_(settle_grooves && c.K_int > 0 ? modal_max_run : 0),
+      t_end_(t_end),
+      modal_(c),
+      dir_prev_(c.N, 0),
+      kind_prev_(c.N, kStuck),
       eps_u_(kSettleFrac * atol_u),
       eps_v_(kSettleFrac * atol_v),
       kind_(c.N, kStuck),
       A_(c.N, 0.0),
       B_(c.N, 0.0),
       t_cross_(c.N, kInf),
+      recheck_(c.N, 0),
+      fresh_(c.N, 0),
       diag_(c.N),
       off_(c.N),
       rhs_(c.N) {
@@ -88,7 +96,7 @@ bool ActiveSet::settled_now(const State& s, Span r) const {
   return true;
 }
 
-void ActiveSet::rebuild(const Chain& c, const State& s) {
+void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touched) {
   // A grooves-only run is always a whole groove segment; it keeps its A, B while it stays
   // grooves-only, because its stuck boundary blocks have not moved since they were computed.
   // kind_ still holds the previous classification until it is refilled below.
@@ -109,25 +117,128 @@ void ActiveSet::rebuild(const Chain& c, const State& s) {
     i = j + 1;
   }
   for (Run& r : runs_) {
-    if (!r.grooves) continue;
-    const std::uint8_t was = kind_[r.span.lo];
-    if (was == kSettled) {
-      r.kind = kSettled;
-      continue;
+    if (r.grooves) {
+      const std::uint8_t was = kind_[r.span.lo];
+      if (was == kSettled) {
+        r.kind = kSettled;
+        continue;
+      }
+      // Was stepped or modal (ringing, or part of an active run) or never classified: new A, B.
+      particular(c, s, r.span);
+      if (settled_now(s, r.span)) {
+        r.kind = kSettled;
+        continue;
+      }
     }
-    // Was stepped (ringing, or part of an active run) or never classified: new A, B.
-    particular(c, s, r.span);
-    if (settled_now(s, r.span)) r.kind = kSettled;
+    if (r.span.hi - r.span.lo <= modal_max_) r.kind = kModal;
   }
+  kind_prev_.swap(kind_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
   for (const Run& r : runs_)
     for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = r.kind;
   list_stepped(s);
-  for (int i = 0; i < N_; ++i) t_cross_[i] = kInf;
-  for (int i = 0; i < N_; ++i)
-    if (c.contact[i] && s.dir[i] == 0) update_crossing(c, s, i);
-  for (int i : watched_) t_cross_[i] = kInf;
+
+  // Modal runs: a run none of whose blocks or stuck neighbours switched keeps its coordinates
+  // and its blocks' stop times; the others are projected afresh at s.t.
+  auto switched = [&](int i) {
+    return i >= 0 && i < N_ && (s.dir[i] != dir_prev_[i] || (touched != nullptr && touched[i]));
+  };
+  std::fill(fresh_.begin(), fresh_.end(), 0);
+  if (modal_max_ > 0) {
+    modal_.begin(s);
+    for (const Run& r : runs_) {
+      if (r.kind != kModal) continue;
+      bool keep = kind_prev_[r.span.lo] == kModal;
+      for (int i = r.span.lo - 1; keep && i <= r.span.hi; ++i) keep = !switched(i);
+      if (modal_.add(c, s, r.span.lo, r.span.hi, keep))
+        for (int i = r.span.lo; i < r.span.hi; ++i) fresh_[i] = 1;
+    }
+    modal_.end();
+  }
+  // Events. Closed-form crossings and the kept modal events first, then the fresh modal
+  // searches (finish_events).
+  pending_.clear();
+  for (int i = 0; i < N_; ++i) {
+    if (!c.contact[i] || (s.dir[i] != 0 && kind_[i] != kModal)) {
+      t_cross_[i] = kInf, recheck_[i] = 0;
+    } else if (s.dir[i] != 0) {
+      if (fresh_[i]) t_cross_[i] = kInf, recheck_[i] = 0, pending_.push_back(i);
+    } else {
+      // A stuck block keeps its event time unless something next to it changed: it does not
+      // move, nor do its stuck neighbours, and a settled or kept modal neighbour follows the
+      // same path as when the time was found.
+      bool changed = first_ || switched(i) || switched(i - 1) || switched(i + 1) || kind_prev_[i] != kStuck;
+      for (int j : {i - 1, i + 1})
+        if (j >= 0 && j < N_) changed = changed || kind_[j] != kind_prev_[j] || fresh_[j];
+      if (changed && !refresh_stuck(c, s, i)) pending_.push_back(i);
+    }
+  }
+  std::copy(s.dir.begin(), s.dir.end(), dir_prev_.begin());
+  first_ = false;
+  finish_events(c, s);
+}
+
+bool ActiveSet::beside_modal(int i) const {
+  return K_int_ > 0 && ((i > 0 && kind_[i - 1] == kModal) || (i + 1 < N_ && kind_[i + 1] == kModal));
+}
+
+bool ActiveSet::refresh_stuck(const Chain& c, const State& s, int i) {
+  recheck_[i] = 0;
+  if (K_int_ > 0)
+    for (int j : {i - 1, i + 1})
+      if (j >= 0 && j < N_ && kind_[j] == kStepped) {
+        t_cross_[i] = kInf;  // watched: the step's dense output finds its crossing
+        return true;
+      }
+  if (beside_modal(i)) {
+    t_cross_[i] = kInf;  // searched by finish_events
+    return false;
+  }
+  update_crossing(c, s, i);
+  return true;
+}
+
+void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit) {
+  ModalRuns::Found f;
+  if (s.dir[i] != 0) {
+    f = modal_.stop_time(c, s, i, fresh_[i] != 0, limit);
+  } else {
+    double base[2] = {0, 0}, nb_B[2] = {0, 0};
+    for (int side = 0; side < 2; ++side) {
+      const int j = side == 0 ? i - 1 : i + 1;
+      if (j < 0 || j >= N_) continue;
+      if (kind_[j] == kSettled) base[side] = settled_u(j, s.t), nb_B[side] = B_[j];
+      else base[side] = s.u[j];
+    }
+    f = modal_.crossing_time(c, s, i, base, nb_B, limit);
+  }
+  // Cut off at the limit: search again from there if it ever becomes the next event.
+  t_cross_[i] = std::isfinite(f.t) ? f.t : f.limited ? limit : kInf;
+  recheck_[i] = !std::isfinite(f.t) && f.limited;
+}
+
+void ActiveSet::finish_events(const Chain& c, const State& s) {
+  // Each fresh modal search goes only as far as the earliest event known so far: most of them
+  // never become the next event, and one cut off is searched again when it does (recheck()).
   refresh_next();
+  for (int i : pending_) {
+    // Limited by the earliest real event (not a recheck), so a recheck always makes progress.
+    search_modal(c, s, i, std::min(next_event_t_, t_end_));
+    const bool rc = recheck_[i] != 0;
+    if (t_cross_[i] < next_.t || (t_cross_[i] == next_.t && (next_.recheck ? !rc || i < next_.block : !rc && i < next_.block)))
+      next_ = {t_cross_[i], i, rc};
+    if (!rc && t_cross_[i] < next_event_t_) next_event_t_ = t_cross_[i];
+  }
+  pending_.clear();
+}
+
+void ActiveSet::recheck(const Chain& c, const State& s) {
+  const int i = next_.block;
+  t_cross_[i] = kInf;
+  recheck_[i] = 0;
+  fresh_[i] = 0;
+  pending_.assign(1, i);
+  finish_events(c, s);
 }
 
 void ActiveSet::list_stepped(const State& s) {
@@ -173,9 +284,14 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
 }
 
 void ActiveSet::refresh_next() {
-  next_ = {kInf, -1};
-  for (int i = 0; i < N_; ++i)
-    if (t_cross_[i] < next_.t) next_ = {t_cross_[i], i};
+  // On a tie a real event goes before a recheck (which then searches on from there).
+  next_ = {kInf, -1, false};
+  next_event_t_ = kInf;
+  for (int i = 0; i < N_; ++i) {
+    const bool rc = recheck_[i] != 0;
+    if (t_cross_[i] < next_.t || (t_cross_[i] == next_.t && next_.recheck && !rc)) next_ = {t_cross_[i], i, rc};
+    if (!rc && t_cross_[i] < next_event_t_) next_event_t_ = t_cross_[i];
+  }
 }
 
 bool ActiveSet::retire_settled(const Chain& c, const State& s) {
@@ -193,13 +309,14 @@ bool ActiveSet::retire_settled(const Chain& c, const State& s) {
   for (const Run& r : runs_) {
     if (r.kind != kSettled) continue;
     for (int i : {r.span.lo - 1, r.span.hi})
-      if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && t_cross_[i] == kInf) update_crossing(c, s, i);
+      if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && t_cross_[i] == kInf && !refresh_stuck(c, s, i))
+        pending_.push_back(i);
   }
-  refresh_next();
+  finish_events(c, s);
   return true;
 }
 
-void ActiveSet::materialise(double t, double* u, double* v) const {
+void ActiveSet::materialise(double t, double* u, double* v, bool at_sample) {
   for (const Run& r : runs_) {
     if (r.kind != kSettled) continue;
     for (int i = r.span.lo; i < r.span.hi; ++i) {
@@ -207,6 +324,7 @@ void ActiveSet::materialise(double t, double* u, double* v) const {
       v[i] = B_[i];
     }
   }
+  if (modal_max_ > 0) modal_.materialise(t, u, v, at_sample);
 }
 
 }  // namespace sb::event_detail

@@ -9,20 +9,28 @@
 //   * Ringing  if it is grooves only and still carries a transient: stepped too (its own blocks
 //              only, so a groove far from the slip costs n, not N);
 //   * Settled  if it is grooves only and its transient is below the tolerance (see below):
-//              u = A + B t exactly, the affine particular solution (a tridiagonal solve).
-// A stuck block with no stepped neighbour feels an affine force a + b t, so its threshold
-// crossing is closed form; only stuck blocks next to a stepped run need the step's dense output.
+//              u = A + B t exactly, the affine particular solution (a tridiagonal solve);
+//   * Modal    if it is not settled and at most modal_max_run blocks long: propagated exactly
+//              by its modes with no time step (modal_runs.hpp), its stops and its stuck
+//              neighbours' crossings found by EdgeMarch. A creeping block (mu_d clipped to
+//              mu_s) that never stops then costs nothing between its neighbours' switches.
+// A stuck block with no stepped or modal neighbour feels an affine force a + b t, so its
+// threshold crossing is closed form; one beside a modal run (and no stepped one) has an exact
+// crossing from the modes; only stuck blocks next to a stepped run need the step's dense output.
 // The cost of a step is therefore proportional to the blocks that actually move, which is what
 // makes a precursor of a few blocks in a 360-block chain cheap.
 //
 // A settled run drops a transient smaller than 0.1 times the stepper's absolute tolerance (in u
 // and in v); it keeps decaying, so the error committed is below one step's.
-// With settle_grooves = false no run is ever settled (the reference mode used by the tests).
+// With settle_grooves = false no run is ever settled or modal (the reference mode used by the
+// tests). modal_max_run = 0 turns modal runs off.
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <tuple>
 #include <vector>
 
+#include "springblock/integrate/modal_runs.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 
@@ -34,10 +42,15 @@ struct Span {
 
 class ActiveSet {
  public:
-  ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v);
+  ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v, int modal_max_run = 0,
+            double t_end = std::numeric_limits<double>::infinity());
+  void set_sample_dt(double dt) { modal_.set_sample_dt(dt); }
 
-  // Classify the runs after a switch at s.t (every settled groove already materialised in s).
-  void rebuild(const Chain& c, const State& s);
+  // Classify the runs after a switch at s.t (every settled and modal run already materialised
+  // in s).
+  // touched: per block, 1 if it switched since the last rebuild (Switching::touched()); without
+  // it a change of s.dir is taken as the switch.
+  void rebuild(const Chain& c, const State& s, const std::uint8_t* touched = nullptr);
 
   // Runs stepped by Dormand-Prince, in block order.
   const std::vector<Span>& stepped() const { return stepped_; }
@@ -45,23 +58,30 @@ class ActiveSet {
   // every stuck block next to a stepped run (K_int > 0).
   const std::vector<int>& watched() const { return watched_; }
 
-  enum Kind : std::uint8_t { kStuck = 0, kStepped = 1, kSettled = 2 };
+  enum Kind : std::uint8_t { kStuck = 0, kStepped = 1, kSettled = 2, kModal = 3 };
   Kind kind(int i) const { return static_cast<Kind>(kind_[i]); }
   // Displacement of a settled groove block at time t.
   double settled_u(int i, double t) const { return A_[i] + B_[i] * t; }
+  // Displacement of a block in a modal run at time t.
+  double modal_u(int i, double t) const { return modal_.u(i, t); }
 
-  // Write the settled grooves' exact u, v at time t into u, v.
-  void materialise(double t, double* u, double* v) const;
+  // Write the settled and modal runs' exact u, v at time t into u, v (at_sample: t is a sample
+  // time, see ModalRuns::materialise).
+  void materialise(double t, double* u, double* v, bool at_sample = false);
+  int modal_runs() const { return modal_.count(); }
 
   // After an accepted step at s.t: ringing runs whose transient has died become settled and
   // leave the stepped set. Returns true when the stepped set changed.
   bool retire_settled(const Chain& c, const State& s);
 
   struct Next {
-    double t;   // earliest closed-form threshold crossing (infinity if none)
+    double t;   // earliest closed-form or modal event (infinity if none)
     int block;  // its block (lowest index on a tie), -1 if none
+    bool recheck;  // not an event: a modal search was cut off here; call recheck() at t
   };
   Next next_crossing() const { return next_; }
+  // At next_crossing().t with recheck set: continue that block's search from s.t.
+  void recheck(const Chain& c, const State& s);
 
  private:
   struct Run {
@@ -84,20 +104,38 @@ class ActiveSet {
   void list_stepped(const State& s);
   // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
   void update_crossing(const Chain& c, const State& s, int i);
+  // The event time of stuck block i when it needs no modal search (watched: none here;
+  // otherwise closed form). Returns false if it borders a modal run (search it instead).
+  bool refresh_stuck(const Chain& c, const State& s, int i);
+  bool beside_modal(int i) const;
+  // Modal event search of block i up to limit (stop if sliding, threshold crossing if stuck).
+  void search_modal(const Chain& c, const State& s, int i, double limit);
+  // refresh_next, then the pending modal searches, each limited by the earliest event so far.
+  void finish_events(const Chain& c, const State& s);
   void refresh_next();
 
   int N_;
   double K_int_;
   bool settle_grooves_;
+  int modal_max_;
+  double t_end_;
+  ModalRuns modal_;
+  std::vector<std::int8_t> dir_prev_;   // s.dir at the previous rebuild
+  std::vector<std::uint8_t> kind_prev_;
   double eps_u_, eps_v_;
   std::vector<std::uint8_t> kind_;
   std::vector<Run> runs_;
   std::vector<Span> stepped_;
   std::vector<int> watched_;
   std::vector<double> A_, B_;          // per block, valid in groove runs
-  std::vector<double> t_cross_;        // per contact block, closed-form crossing (inf if none / watched)
+  std::vector<double> t_cross_;        // per contact block: next closed-form or modal event (inf if none / watched)
+  std::vector<std::uint8_t> recheck_;  // per block: t_cross_ is where a modal search was cut off
+  std::vector<std::uint8_t> fresh_;    // per block: in a modal run projected afresh at this rebuild
+  std::vector<int> pending_;           // blocks whose modal search is due
   std::vector<double> diag_, off_, rhs_;  // tridiagonal work arrays
-  Next next_{0, -1};
+  Next next_{0, -1, false};
+  double next_event_t_ = 0;  // earliest real event (rechecks excluded)
+  bool first_ = true;        // the first rebuild computes every event time
 };
 
 }  // namespace sb::event_detail

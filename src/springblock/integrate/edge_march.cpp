@@ -20,17 +20,32 @@ constexpr int kResync = 256;
 constexpr int kMaxDepth = 30;   // grazing subdivision: 2^-30 of a grid step (~1e-15 s)
 constexpr int kGrazeBudget = 96;  // direct evaluations per grazing search
 
-// First tau >= 0 at which an affine force a + b tau reaches +-f (|a| <= f assumed).
-double affine_crossing(double a, double b, double f) {
-  if (b == 0.0) return kInf;
-  return std::max(((b > 0 ? f : -f) - a) / b, 0.0);
-}
-
 }  // namespace
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
   const double omega = std::sqrt(mode.omega2);
   modes_.push_back({w, omega, omega + 2.0 * mode.alpha, mode, 0, 0, 0, 0, index});
+}
+
+double EdgeMarch::grid_step(double omega_max) { return kGrid / omega_max; }
+
+void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const double* P) {
+  const double omega = std::sqrt(mode.omega2);
+  modes_.push_back({w, omega, omega + 2.0 * mode.alpha, mode, P[0], P[1], P[2], P[3], index});
+}
+
+void EdgeMarch::finish(double H) {
+  H_ = H;
+  q_.resize(modes_.size());
+  qd_.resize(modes_.size());
+}
+
+double EdgeMarch::affine_reach(double a, double b, double fs) const {
+  if (sense_ == Sense::Abs) {
+    if (b == 0.0) return kInf;
+    return std::max(((b > 0 ? fs : -fs) - a) / b, 0.0);
+  }
+  return b > 0 ? std::max((fs - a) / b, 0.0) : kInf;
 }
 
 void EdgeMarch::finish() {
@@ -86,10 +101,10 @@ double EdgeMarch::force(const double* q0, const double* p0, double tau) {
 bool EdgeMarch::graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi,
                       double Fhi, double m2, int depth, double& where) {
   const double h = hi - lo;
-  if (std::max(std::fabs(Flo), std::fabs(Fhi)) + 0.125 * m2 * h * h < fs) return false;
+  if (std::max(measure(Flo), measure(Fhi)) + 0.125 * m2 * h * h < fs) return false;
   if (depth >= kMaxDepth || budget_-- <= 0) return false;  // below resolution (see header)
   const double mid = 0.5 * (lo + hi), Fm = force(q0, p0, mid);
-  if (std::fabs(Fm) >= fs) {
+  if (measure(Fm) >= fs) {
     where = mid;
     return true;
   }
@@ -100,19 +115,40 @@ bool EdgeMarch::graze(const double* q0, const double* p0, double fs, double lo, 
 double EdgeMarch::lower_bound(const double* q0, const double* p0, double fs) {
   direct(q0, p0, 0.0);
   const Sums s = sums(0.0);
-  const double g = fs - std::fabs(s.F);
-  if (g <= 0) return 0.0;
-  double skip = s.sb > 0 ? g / s.sb : kInf;
-  if (s.mb < fs && std::fabs(a_) <= fs - s.mb) skip = std::max(skip, affine_crossing(a_, b_, fs - s.mb));
-  return skip;
+  const double g = fs - measure(s.F);
+  if (g <= 0 || open_) return 0.0;
+  return std::max(s.sb > 0 ? g / s.sb : kInf, envelope_skip(a_, s.mb, fs));
+}
+
+double EdgeMarch::envelope_skip(double aff, double mb, double fs) const {
+  // No crossing while the affine part stays within the modal bound mb of the threshold.
+  const double room = fs - mb;
+  const bool inside = sense_ == Sense::Abs ? (mb < fs && std::fabs(aff) <= room) : aff <= room;
+  return inside ? affine_reach(aff, b_, room) : 0.0;
 }
 
 double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0) {
-  // Bisection on a bracket with |F(lo)| < fs <= |F(hi)|; returns the crossed end.
-  auto refine = [&](double lo, double hi) {
+  // Shrink a bracket with gap g = fs - measure(F) > 0 at lo and <= 0 at hi to round-off in t;
+  // returns the crossed end. Regula falsi with the Illinois modification (the retained end's
+  // gap is halved when the same end is kept twice), falling back to bisection whenever the
+  // secant point is not well inside: the bracket is kept at every iteration, and a smooth gap
+  // needs ~10 direct evaluations instead of ~50 for plain bisection.
+  auto refine = [&](double lo, double glo, double hi, double ghi) {
+    int kept = 0;  // +1: lo kept last time, -1: hi kept last time
     for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(t0 + hi); ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (std::fabs(force(q0, p0, mid)) < fs ? lo : hi) = mid;
+      double mid = hi - ghi * (hi - lo) / (ghi - glo);
+      const double w = hi - lo;
+      if (!(mid > lo + 1e-3 * w && mid < hi - 1e-3 * w)) mid = 0.5 * (lo + hi);
+      const double gm = fs - measure(force(q0, p0, mid));
+      if (gm > 0) {
+        lo = mid, glo = gm;
+        if (kept == -1) ghi *= 0.5;
+        kept = -1;
+      } else {
+        hi = mid, ghi = gm;
+        if (kept == 1) glo *= 0.5;
+        kept = 1;
+      }
     }
     return hi;
   };
@@ -120,27 +156,36 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
   direct(q0, p0, 0.0);
   Sums S = sums(0.0);
   int since_sync = 0;
+  bool open = open_;  // tau = 0 sits on the threshold and is not an event (see header)
+  hit_limit = false;
   for (;;) {
-    const double g = fs - std::fabs(S.F);
-    if (g <= 0) return tau;  // only at tau = 0: later crossings are bracketed below
-    if (S.mb <= 1e-16 * fs) {
-      // The modes have died out below round-off: the force is affine from here on.
-      const double t = tau + affine_crossing(S.F, b_, fs);
-      return t <= tau_limit ? t : kInf;
+    const double g = fs - measure(S.F);
+    if (!open) {
+      if (g <= 0) return tau;  // only at tau = 0: later crossings are bracketed below
+      if (S.mb <= 1e-16 * std::max(std::fabs(fs), std::fabs(S.F))) {
+        // The modes have died out below round-off: the signal is affine from here on.
+        const double t = tau + affine_reach(S.F, b_, fs);
+        hit_limit = t > tau_limit && std::isfinite(t);
+        return t <= tau_limit ? t : kInf;
+      }
     }
-    if (tau >= tau_limit) return kInf;
+    if (tau >= tau_limit) {
+      hit_limit = true;
+      return kInf;
+    }
     // No crossing before |F| has changed by g at a rate of at most sb, nor before the affine
     // part alone comes within the modal bound mb of the threshold.
-    double skip = S.sb > 0 ? g / S.sb : kInf;
-    const double aff = a_ + b_ * tau;
-    if (S.mb < fs && std::fabs(aff) <= fs - S.mb) skip = std::max(skip, affine_crossing(aff, b_, fs - S.mb));
+    const double skip = open ? 0.0 : std::max(S.sb > 0 ? g / S.sb : kInf, envelope_skip(a_ + b_ * tau, S.mb, fs));
     if (skip >= kJump * H_) {
       const double next = tau + skip;
-      if (next > tau_limit) return kInf;
+      if (next > tau_limit) {
+        hit_limit = std::isfinite(next);
+        return kInf;
+      }
       direct(q0, p0, next);
       S = sums(next);
       since_sync = 0;
-      if (std::fabs(S.F) >= fs) return next;  // a safe skip ends at most on the threshold
+      if (measure(S.F) >= fs) return next;  // a safe skip ends at most on the threshold
       tau = next;
       continue;
     }
@@ -152,17 +197,19 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
       grid_step();
     }
     const Sums S1 = sums(t1);
-    if (std::fabs(S1.F) >= fs) return refine(tau, t1);
-    if (std::max(std::fabs(S.F), std::fabs(S1.F)) + 0.125 * S.m2 * H_ * H_ >= fs) {
+    // At an open origin the gap is ~0 (on the threshold): bisection's end there is lo itself.
+    if (measure(S1.F) >= fs) return refine(tau, open ? fs : fs - measure(S.F), t1, fs - measure(S1.F));
+    if (!open && std::max(measure(S.F), measure(S1.F)) + 0.125 * S.m2 * H_ * H_ >= fs) {
       budget_ = kGrazeBudget;
       double where = 0;
       const bool hit = graze(q0, p0, fs, tau, S.F, t1, S1.F, S.m2, 0, where);
-      if (hit) return refine(tau, where);
+      if (hit) return refine(tau, fs - measure(S.F), where, fs - measure(force(q0, p0, where)));
       direct(q0, p0, t1);  // the grazing search moved the mode state: restore it at t1
       since_sync = 0;
     }
     tau = t1;
     S = S1;
+    open = false;
   }
 }
 

@@ -1,8 +1,12 @@
 #pragma once
-// First threshold crossing of one stuck block next to ringing groove segments (quiet phase).
+// First threshold crossing of a sum of damped modes: a stuck block's force next to ringing
+// groove segments (quiet phase) or short exactly propagated runs (active_set.hpp), or a sliding
+// block's velocity in such a run.
 //
-// Its driving force is F(tau) = a + b tau + sum_k w_k q_k(tau), q_k damped oscillators. The gap
-// g = f_static - |F| is searched for its first root with three tools, cheapest first:
+// The signal is F(tau) = a + b tau + sum_k w_k q_k(tau), q_k damped oscillators. Two senses:
+//  * Abs:   the event is |F| >= fs (a stuck block's threshold, either direction);
+//  * Upper: the event is F >= fs (one-sided: used for -dir v reaching a sliding block's stop).
+// The gap g = fs - |F| (or fs - F) is searched for its first root with three tools, cheapest first:
 //  * skips that provably cannot pass a root: g / (bound on |dF|), or the time the affine part
 //    needs to come within the modal envelope of the threshold. Each costs one direct evaluation
 //    (exp / sincos per mode), so it is used only when it skips many grid steps;
@@ -18,6 +22,9 @@
 //  * bisection of a bracket to round-off in t (direct evaluations).
 // Every mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it), so the bounds
 // taken at one point hold for all later times.
+// With an open origin the event function may start on the threshold (a block that has just
+// started to slide, v = 0): tau = 0 is then not an event, the first grid interval is searched
+// for a sign change only, and the provable skips start from the first grid point.
 #include <vector>
 
 #include "springblock/integrate/damped_mode.hpp"
@@ -26,10 +33,21 @@ namespace sb::event_detail {
 
 class EdgeMarch {
  public:
+  enum class Sense { Abs, Upper };
   // One mode of an adjacent segment: weight in F, the mode, and its flat index in q0 / p0.
   void add_mode(double w, const DampedMode& mode, int index);
   // After all modes are added: the grid step from the fastest mode, transition matrices.
   void finish();
+  // The same with a grid step H fixed by the caller and each mode's transition over H given as
+  // P = {p00, p01, p10, p11} (precomputed once per mode, so no transcendental call here).
+  void add_mode(double w, const DampedMode& mode, int index, const double* P);
+  void finish(double H);
+  // Forget the modes (the storage is kept for reuse).
+  void reset() { modes_.clear(); }
+  // The grid step used by finish() for modes no faster than omega_max.
+  static double grid_step(double omega_max);
+
+  void set_sense(Sense sense, bool origin_open) { sense_ = sense, open_ = origin_open; }
 
   // a, b: affine part of F at the start of the quiet phase; fs: the threshold.
   void set_affine(double a, double b) { a_ = a, b_ = b; }
@@ -37,9 +55,13 @@ class EdgeMarch {
 
   // A cheap lower bound on the first crossing (for ordering the searches).
   double lower_bound(const double* q0, const double* p0, double fs);
-  // First tau in [0, tau_limit] with |F| >= fs, or +inf. t0 only sets the round-off scale.
+  // First tau in [0, tau_limit] with |F| >= fs (Upper: F >= fs), or +inf. t0 only sets the
+  // round-off scale.
   double first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0);
 
+  // After first_crossing returned +inf: true if the search stopped at tau_limit (a crossing may
+  // follow later), false if none can ever follow.
+  bool hit_limit = false;
   // Diagnostics of the last searches: direct (transcendental) evaluations and grid steps.
   long direct_evals = 0, grid_steps = 0;
 
@@ -57,12 +79,20 @@ class EdgeMarch {
   void grid_step();                                              // q_, qd_ advanced by H
   Sums sums(double tau) const;
   double force(const double* q0, const double* p0, double tau);  // F only, direct
+  double measure(double F) const { return sense_ == Sense::Abs ? (F < 0 ? -F : F) : F; }
+  // First tau >= 0 at which the affine part a + b tau reaches the threshold (inf if never).
+  double affine_reach(double a, double b, double fs) const;
+  // A skip that provably passes no crossing: the time until the affine part at tau (aff) comes
+  // within the modal bound mb of the threshold (0 if it already is).
+  double envelope_skip(double aff, double mb, double fs) const;
   bool graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi, double Fhi,
              double m2, int depth, double& where);
 
   std::vector<Mode> modes_;
   std::vector<double> q_, qd_;
   double a_ = 0, b_ = 0, H_ = 0;
+  Sense sense_ = Sense::Abs;
+  bool open_ = false;
   int budget_ = 0;  // direct evaluations left for the current grazing search
 };
 

@@ -29,7 +29,7 @@ struct SampleClock {
 
 template <bool Coupled, bool Damped>
 void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, double tol,
-              bool fast_forward, std::vector<double>* log_) {
+              bool fast_forward, int modal_max_run, std::vector<double>* log_) {
   const int N = c.N;
   // Error scales: the spring stretch at the threshold, F_n / K_s, and the velocity of an
   // oscillation of that amplitude at the slider frequency.
@@ -44,7 +44,8 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   Switching sw(N);
   // Settled grooves are a form of fast-forward (they drop a transient below the tolerance), so
   // they follow the same switch; the closed-form crossings of stuck blocks are exact either way.
-  ActiveSet active(c, fast_forward, atol_u, atol_v);
+  ActiveSet active(c, fast_forward, atol_u, atol_v, modal_max_run, t_end);
+  active.set_sample_dt(sample_dt);
   std::unique_ptr<QuietPhase> quiet;
   if (fast_forward) {
     quiet = std::make_unique<QuietPhase>(c);
@@ -57,7 +58,8 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
 
   // After every switch: which runs are stepped, which stuck blocks are watched.
   auto reclassify = [&] {
-    active.rebuild(c, s);
+    active.rebuild(c, s, sw.touched());
+    sw.clear_touched();
     dp.set_frozen(s.u.data());
   };
   // Settle the switches flagged at s.t (settled grooves first brought to s.t).
@@ -68,7 +70,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   };
 
   sw.sync(c, s);
-  sw.settle(c, s);
+  sw.settle(c, s, true);
   reclassify();
   obs.sample(c, s);
   SampleClock clock{sample_dt, static_cast<long long>(std::floor(s.t / sample_dt)) + 1};
@@ -83,7 +85,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   };
   auto sample_if_due = [&] {
     if (s.t == clock.next()) {
-      active.materialise(s.t, s.u.data(), s.v.data());
+      active.materialise(s.t, s.u.data(), s.v.data(), true);
       obs.sample(c, s);
       ++clock.k;
     }
@@ -125,6 +127,27 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     }
 
     const auto& spans = active.stepped();
+    if (spans.empty()) {
+      // Everything that moves is exact (modal or settled runs): go straight to the next event,
+      // sample or the end of the run.
+      const auto next = active.next_crossing();
+      const double t_stop = std::min({clock.next(), t_end, next.t});
+      if (t_stop > s.t) {
+        s.t = t_stop;
+        ++s.steps;  // one exact step (State::steps counts accepted steps, of any kind)
+      }
+      if (next.t <= s.t) {
+        if (next.recheck) {
+          active.recheck(c, s);
+        } else {
+          sw.flag(next.block);
+          switch_now();
+        }
+      }
+      stage1_valid = false;
+      sample_if_due();
+      continue;
+    }
     if (!stage1_valid) {
       dp.first_stage<Coupled, Damped>(c, spans, s.u.data(), s.v.data(), s.t, sw.mobile(), sw.f_kin());
       ++s.rhs_evals;
@@ -134,9 +157,13 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     // stuck block, or the end of the run.
     const auto crossing = active.next_crossing();
     if (crossing.t <= s.t) {
-      sw.flag(crossing.block);
-      switch_now();
-      stage1_valid = false;
+      if (crossing.recheck) {
+        active.recheck(c, s);  // nothing switched: stage 1 stays valid
+      } else {
+        sw.flag(crossing.block);
+        switch_now();
+        stage1_valid = false;
+      }
       continue;
     }
     const double t_stop = std::min({clock.next(), t_end, crossing.t});
@@ -164,7 +191,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
       }
       for (int i : search.hits()) sw.flag(i);
       // A closed-form crossing due at the same instant switches with them.
-      if (theta == 1.0 && clipped && t_stop == crossing.t) sw.flag(crossing.block);
+      if (theta == 1.0 && clipped && t_stop == crossing.t && !crossing.recheck) sw.flag(crossing.block);
       switch_now();
       stage1_valid = false;
       sample_if_due();
@@ -175,7 +202,9 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     s.t = clipped ? t_stop : s.t + h_try;
     ++s.steps;
     h = clipped ? std::max(h, h_try * factor) : h_try * factor;
-    if (clipped && t_stop == crossing.t) {
+    if (clipped && t_stop == crossing.t && crossing.recheck) {
+      active.recheck(c, s);
+    } else if (clipped && t_stop == crossing.t) {
       sw.flag(crossing.block);
       switch_now();
       stage1_valid = false;
@@ -199,10 +228,11 @@ void EventDriven::run(const Chain& c, State& s, double t_end, double sample_dt, 
     event_detail::run_uncoupled(c, s, t_end, sample_dt, obs, switch_log_);
     return;
   }
-  if (e.coupled && e.damped) run_loop<true, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, switch_log_);
-  else if (e.coupled) run_loop<true, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, switch_log_);
-  else if (e.damped) run_loop<false, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, switch_log_);
-  else run_loop<false, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, switch_log_);
+  const int mm = modal_max_run_;
+  if (e.coupled && e.damped) run_loop<true, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, switch_log_);
+  else if (e.coupled) run_loop<true, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, switch_log_);
+  else if (e.damped) run_loop<false, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, switch_log_);
+  else run_loop<false, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, switch_log_);
 }
 
 }  // namespace sb

@@ -33,10 +33,15 @@ class EventDriven final : public Integrator {
   std::string name() const override { return "event"; }
   // Diagnostics: when set, the time of every instant at which a switch happened is appended.
   void set_switch_log(std::vector<double>* log) { switch_log_ = log; }
+  // Mobile runs up to this many blocks are propagated exactly by their modes instead of being
+  // stepped (active_set.hpp, modal_runs.hpp); 0 steps every run. Only with fast-forward on.
+  void set_modal_max_run(int n) { modal_max_run_ = n; }
+  static constexpr int kDefaultModalMaxRun = 2;
 
  private:
   double tol_;
   bool fast_forward_;
+  int modal_max_run_ = kDefaultModalMaxRun;
   std::vector<double>* switch_log_ = nullptr;
 };
 

@@ -15,6 +15,7 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
     switch (active.kind(j)) {
       case ActiveSet::kStepped: return th == 1.0 ? u1[j] : dp.dense_u(j, th);
       case ActiveSet::kSettled: return active.settled_u(j, t + th * h);
+      case ActiveSet::kModal: return active.modal_u(j, t + th * h);
       default: return s.u[j];  // a stuck neighbour does not move
     }
   };

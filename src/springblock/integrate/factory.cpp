@@ -10,7 +10,11 @@ std::unique_ptr<Integrator> make_integrator(const RunControl& rc) {
     case Method::RK4:
       return std::make_unique<Rk4>(rc.dt_s);
     case Method::Event:
-      return std::make_unique<EventDriven>(rc.tol);
+    {
+      auto e = std::make_unique<EventDriven>(rc.tol);
+      e->set_modal_max_run(rc.modal_max_run);
+      return e;
+    }
   }
   throw InputError("method", "unknown integration method");
 }

@@ -11,6 +11,7 @@ void Switching::sync(const Chain& c, const State& s) {
   for (int i = 0; i < c.N; ++i) {
     mobile_[i] = (!c.contact[i] || s.dir[i] != 0) ? 1.0 : 0.0;
     f_kin_[i] = s.dir[i] * c.f_kinetic[i];
+    dir_seen_[i] = s.dir[i];
     n_sliding_ += s.dir[i] != 0;
   }
 }
@@ -54,30 +55,50 @@ void throw_cascade(std::int64_t limit, double t) {
                            " s without time advancing (is mu_d > mu_s kept for some block?)");
 }
 
-int Switching::settle(const Chain& c, State& s) {
+void Switching::update(const Chain& c, const State& s, int i) {
+  const bool sliding = s.dir[i] != 0;
+  n_sliding_ += static_cast<int>(sliding) - static_cast<int>(dir_seen_[i] != 0);
+  dir_seen_[i] = s.dir[i];
+  mobile_[i] = (!c.contact[i] || sliding) ? 1.0 : 0.0;
+  f_kin_[i] = s.dir[i] * c.f_kinetic[i];
+}
+
+int Switching::settle(const Chain& c, State& s, bool full) {
   if (s.t != instant_) {
     instant_ = s.t;
     at_instant_ = 0;
   }
   const std::int64_t limit = 100LL * c.N;
+  if (full) {
+    work_.clear();
+    for (int i = 0; i < c.N; ++i)
+      if (c.contact[i]) work_.push_back(i);
+  } else {
+    work_ = flag_list_;
+  }
   int made = 0;
   bool first_pass = true, changed = true;
   while (changed) {
     changed = false;
-    for (int i = 0; i < c.N; ++i) {
+    for (int i : work_) {
       if (!c.contact[i]) continue;
       const int m = apply_rules(c, s, i, first_pass && flagged_[i]);
+      if (m > 0) {
+        if (!touched_[i]) touched_[i] = 1, touched_list_.push_back(i);
+        update(c, s, i);
+      }
       made += m;
       changed = changed || m > 0;
     }
-    if (first_pass)
-      for (auto& f : flagged_) f = 0;
+    if (first_pass) {
+      for (int i : flag_list_) flagged_[i] = 0;
+      flag_list_.clear();
+    }
     first_pass = false;
     if (at_instant_ + made > limit) throw_cascade(limit, s.t);
   }
   at_instant_ += made;
   s.switches += made;
-  sync(c, s);
   return made;
 }
 

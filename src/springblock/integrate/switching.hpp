@@ -7,8 +7,12 @@
 //    instant, starts to slide in the direction of F.
 //  * A block at rest that has just been set sliding but whose kinetic friction exceeds the
 //    force (only possible when mu_d > mu_s is kept) stops again at once.
-// Blocks are visited in index order and the passes repeat until nothing changes, so the outcome
-// is deterministic. Each switch is counted; more than 100 N at one instant is a cascade that
+// The rules are applied to the blocks whose events were located at this instant (flagged), in
+// the order they were flagged, and repeated until none of them changes, so the outcome is
+// deterministic. Nothing else can switch at the instant: a switch moves no block, so it changes
+// no other block's force (only the switched block's own velocity), and every other block's
+// event is located by the integrator at its own time. The first settle of a run (full = true)
+// visits every contact block in index order. Each switch is counted; more than 100 N at one instant is a cascade that
 // would never end, reported as std::runtime_error.
 #include <cstdint>
 #include <vector>
@@ -26,21 +30,35 @@ int apply_rules(const Chain& c, State& s, int i, bool event_here);
 
 class Switching {
  public:
-  explicit Switching(int N) : flagged_(N, 0), mobile_(N), f_kin_(N) {}
+  explicit Switching(int N) : flagged_(N, 0), touched_(N, 0), dir_seen_(N, 0), mobile_(N), f_kin_(N) {}
 
   // Mark a block whose event was located at the current instant (cleared by settle()).
-  void flag(int i) { flagged_[i] = 1; }
+  void flag(int i) {
+    if (!flagged_[i]) flagged_[i] = 1, flag_list_.push_back(i);
+  }
   // Apply the rules at s.t; returns the number of switches made. Throws on a cascade.
-  int settle(const Chain& c, State& s);
+  int settle(const Chain& c, State& s, bool full = false);
   // Rebuild mobile / f_kin from s.dir (at the start of a run).
   void sync(const Chain& c, const State& s);
 
+  // Blocks switched since the last clear_touched(), 1 per block (a stop followed by a restart
+  // at the same instant leaves dir unchanged, so dir alone does not show it).
+  const std::uint8_t* touched() const { return touched_.data(); }
+  void clear_touched() {
+    for (int i : touched_list_) touched_[i] = 0;
+    touched_list_.clear();
+  }
   const double* mobile() const { return mobile_.data(); }  // 1 = groove or sliding, 0 = stuck
   const double* f_kin() const { return f_kin_.data(); }    // signed kinetic friction
   int n_sliding() const { return n_sliding_; }
 
  private:
-  std::vector<std::uint8_t> flagged_;
+  // Keep mobile_, f_kin_ and n_sliding_ in step with s.dir for block i.
+  void update(const Chain& c, const State& s, int i);
+
+  std::vector<std::uint8_t> flagged_, touched_;
+  std::vector<int> flag_list_, work_, touched_list_;
+  std::vector<std::int8_t> dir_seen_;  // s.dir as mobile_ / f_kin_ last saw it
   std::vector<double> mobile_, f_kin_;
   int n_sliding_ = 0;
   double instant_ = -1;            // time of the last settle, to count switches per instant

@@ -1,0 +1,260 @@
+#include "springblock/integrate/modal_runs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sb::event_detail {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// The sample recurrence restarts from the closed form this often, so its round-off never
+// accumulates (the same rule as the quiet phase's samples).
+constexpr int kResync = 64;
+// Round-off margin of a stop, in units of the slider velocity (see the header).
+constexpr double kStopMargin = 1e-12;
+
+void transition(const DampedMode& m, double dt, std::array<double, 4>& P) {
+  m.eval(1.0, 0.0, dt, P[0], P[2]);  // column 1: from (q, qd) = (1, 0)
+  m.eval(0.0, 1.0, dt, P[1], P[3]);  // column 2: from (0, 1)
+}
+
+}  // namespace
+
+ModalRuns::ModalRuns(const Chain& c)
+    : N_(c.N),
+      K_int_(c.K_int),
+      eps_v_(kStopMargin * c.v_slider),
+      // One grid step for every run: the fastest mode any run can have is below
+      // sqrt((K_s + 4 K_int) / m), so the per-mode transitions are computed once per basis.
+      H_(EdgeMarch::grid_step(std::sqrt((c.K_s + 4.0 * c.K_int) / c.m))),
+      run_of_(c.N, -1),
+      A_(c.N),
+      B_(c.N),
+      q0_(c.N),
+      p0_(c.N),
+      acc0_(c.N),
+      qc_(c.N),
+      qdc_(c.N),
+      cq_(c.N),
+      cp_(c.N),
+      vq_(c.N),
+      va_(c.N),
+      rhs_(c.N) {}
+
+void ModalRuns::set_sample_dt(double dt) {
+  sample_dt_ = dt;
+  for (auto& [key, b] : bases_)
+    for (std::size_t k = 0; k < b.modes.size(); ++k) transition(b.modes[k], dt, b.sample[k]);
+}
+
+const ModalRuns::Basis& ModalRuns::basis(const Chain& c, int n, bool left, bool right) {
+  const auto key = std::make_tuple(n, left, right);
+  auto it = bases_.find(key);
+  if (it != bases_.end()) return it->second;
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  for (int r = 0; r < n; ++r) {
+    K(r, r) = c.K_s + ((r > 0 || left) ? K_int_ : 0.0) + ((r + 1 < n || right) ? K_int_ : 0.0);
+    if (r + 1 < n) K(r, r + 1) = K(r + 1, r) = -K_int_;
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K);
+  Basis b;
+  b.Q = es.eigenvectors();
+  const Eigen::VectorXd& lambda = es.eigenvalues();
+  b.grid.resize(n), b.sample.resize(n);
+  for (int k = 0; k < n; ++k) {
+    b.modes.push_back({0.5 * c.gamma, lambda[k] / c.m});
+    transition(b.modes[k], H_, b.grid[k]);
+    if (sample_dt_ > 0) transition(b.modes[k], sample_dt_, b.sample[k]);
+  }
+  // K^-1 x = Q diag(1/lambda) Q^T x for the pieces of the particular solution that depend only
+  // on the run's shape: B from the slider, a0 from the damping of B, gL / gR per unit position
+  // of the stuck neighbour on either side.
+  auto solve = [&](const Eigen::VectorXd& x) {
+    const Eigen::VectorXd y = b.Q * (b.Q.transpose() * x).cwiseQuotient(lambda);
+    return std::vector<double>(y.data(), y.data() + n);
+  };
+  b.B = solve(Eigen::VectorXd::Constant(n, c.K_s * c.v_slider));
+  b.a0 = solve(-c.m * c.gamma * Eigen::Map<const Eigen::VectorXd>(b.B.data(), n));
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
+  e[0] = left ? K_int_ : 0.0;
+  b.gL = solve(e);
+  e.setZero();
+  e[n - 1] = right ? K_int_ : 0.0;
+  b.gR = solve(e);
+  return bases_.emplace(key, std::move(b)).first->second;
+}
+
+void ModalRuns::begin(const State&) {
+  for (Run& r : runs_) r.live = false;
+}
+
+bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep) {
+  const int old = run_of_[lo];
+  if (keep && old >= 0 && runs_[old].lo == lo && runs_[old].hi == hi && !runs_[old].live) {
+    runs_[old].live = true;
+    return false;
+  }
+  ++projections;
+  const int n = hi - lo;
+  const bool left = lo > 0, right = hi < N_;
+  const Basis& b = basis(c, n, left, right);
+  const double uL = left ? s.u[lo - 1] : 0.0, uR = right ? s.u[hi] : 0.0;
+  // Kinetic friction enters as a constant force: A gains -K^-1 f_kin (zero for grooves only).
+  bool friction = false;
+  for (int r = 0; r < n; ++r) {
+    rhs_[r] = s.dir[lo + r] * c.f_kinetic[lo + r];
+    friction = friction || rhs_[r] != 0.0;
+  }
+  Eigen::Map<const Eigen::MatrixXd> Q(b.Q.data(), n, n);
+  Eigen::VectorXd fk_modal;
+  if (friction) fk_modal = Q.transpose() * Eigen::Map<const Eigen::VectorXd>(rhs_.data(), n);
+  for (int r = 0; r < n; ++r) {
+    B_[lo + r] = b.B[r];
+    A_[lo + r] = b.a0[r] + uL * b.gL[r] + uR * b.gR[r];
+  }
+  if (friction) {
+    for (int k = 0; k < n; ++k) fk_modal[k] /= b.modes[k].omega2 * c.m;
+    for (int r = 0; r < n; ++r) A_[lo + r] -= Q.row(r).dot(fk_modal);
+  }
+  // Modal coordinates of the deviation from u_p at s.t, and each mode's acceleration (the
+  // initial slope of its velocity, which is a damped mode of the same kind).
+  for (int k = 0; k < n; ++k) {
+    double qk = 0, pk = 0;
+    for (int r = 0; r < n; ++r) {
+      const int i = lo + r;
+      qk += Q(r, k) * (s.u[i] - A_[i] - B_[i] * s.t);
+      pk += Q(r, k) * (s.v[i] - B_[i]);
+    }
+    q0_[lo + k] = qk;
+    p0_[lo + k] = pk;
+    acc0_[lo + k] = -c.gamma * pk - b.modes[k].omega2 * qk;
+  }
+  Run run{lo, hi, &b, s.t, s.t, 0, false, true};
+  if (old >= 0 && runs_[old].lo == lo && !runs_[old].live) {
+    // Reuse the slot of the old run that started here; its blocks are re-marked by end().
+    for (int i = runs_[old].lo; i < runs_[old].hi; ++i) run_of_[i] = -1;
+    runs_[old] = run;
+  } else {
+    runs_.push_back(run);
+  }
+  return true;
+}
+
+void ModalRuns::end() {
+  for (const Run& r : runs_)
+    if (!r.live)
+      for (int i = r.lo; i < r.hi; ++i) run_of_[i] = -1;
+  runs_.erase(std::remove_if(runs_.begin(), runs_.end(), [](const Run& r) { return !r.live; }), runs_.end());
+  for (int k = 0; k < static_cast<int>(runs_.size()); ++k)
+    for (int i = runs_[k].lo; i < runs_[k].hi; ++i) run_of_[i] = k;
+}
+
+void ModalRuns::coords(const Run& r, double t, double* q, double* qd) const {
+  const double tau = t - r.t0;
+  for (int k = 0; k < r.hi - r.lo; ++k) r.basis->modes[k].eval(q0_[r.lo + k], p0_[r.lo + k], tau, q[k], qd[k]);
+}
+
+double ModalRuns::u(int i, double t) const {
+  const Run& r = runs_[run_of_[i]];
+  const int n = r.hi - r.lo, row = i - r.lo;
+  const double tau = t - r.t0;
+  double x = A_[i] + B_[i] * t;
+  for (int k = 0; k < n; ++k) {
+    double q, qd;
+    r.basis->modes[k].eval(q0_[r.lo + k], p0_[r.lo + k], tau, q, qd);
+    x += r.basis->Q(row, k) * q;
+  }
+  return x;
+}
+
+void ModalRuns::materialise(double t, double* u, double* v, bool at_sample) {
+  for (Run& r : runs_) {
+    const int n = r.hi - r.lo;
+    double* q = qc_.data() + r.lo;
+    double* qd = qdc_.data() + r.lo;
+    double* sq = cq_.data() + r.lo;  // off-sample evaluations must not move the cursor
+    double* sqd = cp_.data() + r.lo;
+    const bool step = at_sample && r.cursor && sample_dt_ > 0 &&
+                      std::fabs((t - r.tc) - sample_dt_) <= 1e-9 * sample_dt_ && r.since + 1 < kResync;
+    if (step) {
+      for (int k = 0; k < n; ++k) {
+        const auto& P = r.basis->sample[k];
+        const double a = q[k], b = qd[k];
+        q[k] = P[0] * a + P[1] * b;
+        qd[k] = P[2] * a + P[3] * b;
+      }
+      ++r.since;
+    } else if (at_sample) {
+      coords(r, t, q, qd);
+      r.since = 0;
+    } else {
+      coords(r, t, sq, sqd);
+      q = sq, qd = sqd;
+    }
+    if (at_sample) r.tc = t, r.cursor = true;
+    for (int row = 0; row < n; ++row) {
+      double x = A_[r.lo + row] + B_[r.lo + row] * t, y = B_[r.lo + row];
+      for (int k = 0; k < n; ++k) {
+        x += r.basis->Q(row, k) * q[k];
+        y += r.basis->Q(row, k) * qd[k];
+      }
+      u[r.lo + row] = x;
+      v[r.lo + row] = y;
+    }
+  }
+}
+
+ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, bool fresh, double t_limit) {
+  const Run& r = runs_[run_of_[i]];
+  const int n = r.hi - r.lo, row = i - r.lo;
+  const double dir = s.dir[i];
+  // The velocity v = B + sum Q q_k' and each q_k' is a damped mode started from (q', q'') at
+  // s.t. Event: -dir (v - B) >= dir B + eps_v, i.e. dir v <= -eps_v.
+  coords(r, s.t, cq_.data() + r.lo, cp_.data() + r.lo);
+  double v = B_[i];
+  march_.reset();
+  for (int k = 0; k < n; ++k) {
+    const int slot = r.lo + k;
+    const DampedMode& m = r.basis->modes[k];
+    vq_[slot] = cp_[slot];
+    va_[slot] = -c.gamma * cp_[slot] - m.omega2 * cq_[slot];
+    v += r.basis->Q(row, k) * cp_[slot];
+    march_.add_mode(-dir * r.basis->Q(row, k), m, slot, r.basis->grid[k].data());
+  }
+  march_.finish(H_);
+  march_.set_affine(0.0, 0.0);
+  // A block that has just started to slide sits at v = 0 exactly (see EdgeMarch's open origin).
+  march_.set_sense(EdgeMarch::Sense::Upper, fresh ? dir * s.v[i] <= 0.0 : dir * v <= 0.0);
+  const double tau = march_.first_crossing(vq_.data(), va_.data(), dir * B_[i] + eps_v_, t_limit - s.t, s.t);
+  return {s.t + tau, march_.hit_limit};
+}
+
+ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j, const double base[2],
+                                          const double nb_B[2], double t_limit) {
+  march_.reset();
+  double a = c.K_s * (c.v_slider * s.t - s.u[j]), b = c.K_s * c.v_slider;
+  for (int side = 0; side < 2; ++side) {
+    const int nb = side == 0 ? j - 1 : j + 1;
+    if (nb < 0 || nb >= N_) continue;
+    if (run_of_[nb] < 0) {
+      a += K_int_ * (base[side] - s.u[j]);
+      b += K_int_ * nb_B[side];
+      continue;
+    }
+    const Run& r = runs_[run_of_[nb]];
+    const int n = r.hi - r.lo, row = nb - r.lo;
+    // The run's coordinates at s.t (its own origin may be older: it was kept across switches).
+    coords(r, s.t, cq_.data() + r.lo, cp_.data() + r.lo);
+    a += K_int_ * (A_[nb] + B_[nb] * s.t - s.u[j]);
+    b += K_int_ * B_[nb];
+    for (int k = 0; k < n; ++k) march_.add_mode(K_int_ * r.basis->Q(row, k), r.basis->modes[k], r.lo + k, r.basis->grid[k].data());
+  }
+  march_.finish(H_);
+  march_.set_affine(a, b);
+  march_.set_sense(EdgeMarch::Sense::Abs, false);
+  const double tau = march_.first_crossing(cq_.data(), cp_.data(), c.f_static[j], t_limit - s.t, s.t);
+  return {s.t + tau, march_.hit_limit};
+}
+
+}  // namespace sb::event_detail

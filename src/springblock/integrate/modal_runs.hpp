@@ -1,0 +1,110 @@
+#pragma once
+// Exact propagation of short mobile runs while something slides (the active set's kModal runs).
+//
+// Between two switches a run of mobile blocks (sliding and groove blocks between stuck blocks
+// or chain ends) is a linear system with constant forcing:
+//   m u'' + m gamma u' + K u = K_s v t 1 + K_int (u_left e_1 + u_right e_n) - f_kin,
+// f_kin the signed kinetic friction of its sliding blocks. Around the affine particular solution
+// u_p = A + B t its modes (eigenvectors of K) are damped oscillators solved in closed form
+// (damped_mode.hpp), so the run needs no time step at all. Its events are found by EdgeMarch:
+//   * a sliding block stops when dir v falls below -eps_v (eps_v = 1e-12 v_s, the round-off
+//     margin the per-block solver uses too: a creeping block whose velocity only touches zero
+//     is not stopped and restarted at every touch);
+//   * a stuck block beside the run (and beside no stepped run) starts to slide when |F| reaches
+//     f_static; F is affine plus the modes of the one or two runs it borders.
+// For a run of n blocks a switch costs O(n^2) (projection) plus the event searches, against a
+// Dormand-Prince step every ~0.1/omega_max while it moves; the active set uses this only up to
+// a run length set by the caller, where it is cheaper (measured in bench_methods).
+//
+// A run none of whose blocks nor stuck neighbours switched keeps its modal coordinates and its
+// event times across switches elsewhere: a switch costs only the runs it touches.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "springblock/integrate/damped_mode.hpp"
+#include "springblock/integrate/edge_march.hpp"
+#include "springblock/model.hpp"
+#include "springblock/state.hpp"
+
+namespace sb::event_detail {
+
+class ModalRuns {
+ public:
+  explicit ModalRuns(const Chain& c);
+  // Samples spaced by dt are advanced by each mode's exact transition matrix over dt.
+  void set_sample_dt(double dt);
+
+  // Start a classification at s.t. keep(lo, hi) says whether the run [lo, hi) may keep its
+  // coordinates (it was modal with the same span and nothing in or beside it switched).
+  void begin(const State& s);
+  // Register run [lo, hi) as modal at s.t. Returns true if it was projected afresh (its events
+  // need searching), false if kept from before.
+  bool add(const Chain& c, const State& s, int lo, int hi, bool keep);
+  // Drop the runs not registered since begin().
+  void end();
+
+  bool holds(int i) const { return run_of_[i] >= 0; }
+  // Exact u (and v) of a block in a modal run at time t (direct evaluation).
+  double u(int i, double t) const;
+  // Write every modal run's exact u, v at t. at_sample: t is a sample time, so the modal
+  // coordinates may be advanced by the sample recurrence and kept as its new start.
+  void materialise(double t, double* u, double* v, bool at_sample);
+
+  // Event searches from s.t up to t_limit. t = +inf when there is none before t_limit;
+  // limited then says whether one may follow later (search again from t_limit).
+  struct Found {
+    double t;
+    bool limited;
+  };
+  // Stop of sliding block i (fresh: its run was projected at s.t, so s.v[i] is exact).
+  Found stop_time(const Chain& c, const State& s, int i, bool fresh, double t_limit);
+  // Threshold crossing of stuck block j whose neighbours are modal runs, settled grooves or
+  // stuck blocks (no stepped run). For a neighbour that is not modal, base is its position at
+  // s.t and nb_B its drift velocity (0 when stuck); index 0 is the left neighbour.
+  Found crossing_time(const Chain& c, const State& s, int j, const double base[2], const double nb_B[2],
+                      double t_limit);
+
+  int count() const { return static_cast<int>(runs_.size()); }
+  // Diagnostics: fresh projections made so far.
+  long projections = 0;
+
+ private:
+  struct Basis {
+    Eigen::MatrixXd Q;  // columns: orthonormal modes of K
+    std::vector<DampedMode> modes;
+    std::vector<std::array<double, 4>> grid, sample;  // transitions over the march grid and sample spacing
+    std::vector<double> B, a0, gL, gR;  // particular solution pieces (see add())
+  };
+  struct Run {
+    int lo, hi;
+    const Basis* basis;
+    double t0;        // time origin of q0, p0
+    double tc;        // time of the sample cursor qc, qdc
+    int since = 0;    // recurrence steps since the cursor was last set from the closed form
+    bool cursor = false;
+    bool live = true;  // registered in the current classification
+  };
+  const Basis& basis(const Chain& c, int n, bool left, bool right);
+  // Modal coordinates of run r at time t into q, qd (per mode, indices lo.. of the flat arrays).
+  void coords(const Run& r, double t, double* q, double* qd) const;
+
+  int N_;
+  double K_int_, eps_v_, H_, sample_dt_ = 0;
+  std::map<std::tuple<int, bool, bool>, Basis> bases_;
+  std::vector<Run> runs_;
+  std::vector<int> run_of_;                  // block -> index in runs_ (-1: not in a modal run)
+  std::vector<double> A_, B_;                // per block: particular solution
+  std::vector<double> q0_, p0_, acc0_;       // per mode slot: q, q', q'' at the run's t0
+  std::vector<double> qc_, qdc_;             // per mode slot: sample cursor
+  std::vector<double> cq_, cp_;              // per mode slot: scratch coordinates at s.t
+  std::vector<double> vq_, va_;              // per mode slot: velocity modes' initial values at s.t
+  std::vector<double> rhs_;
+  EdgeMarch march_;
+};
+
+}  // namespace sb::event_detail
