@@ -52,6 +52,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     quiet->set_sample_dt(sample_dt);
   }
   State sample = s;  // buffer for samples served from the exact quiet-phase solution
+  std::vector<double> fa(N), fb(N);  // affine contact forces a + b t once a quiet phase's modes died
   // An observer that reads only contact blocks' forces needs the groove segments' end rows at
   // quiet-phase samples (O(N) per sample instead of O(sum n^2) for long grooves).
   const bool ends_only = !obs.reads_groove_interiors();
@@ -102,7 +103,35 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
         std::copy(s.v.begin(), s.v.end(), sample.v.begin());
         std::copy(s.dir.begin(), s.dir.end(), sample.dir.begin());
       }
+      // Once every groove's modes have died out, every contact block's force is affine in t:
+      // the observer may take the rest of the phase's samples at once (sample_affine).
+      const double dead_after = quiet->all_dead_after();
+      bool affine_ready = false;
       while (clock.next() < next.t) {
+        if (clock.next() >= dead_after) {
+          if (!affine_ready) {
+            quiet->affine_forces(c, s.u.data(), fa.data(), fb.data());
+            affine_ready = true;
+          }
+          // Samples k dt < next.t, counted exactly as the clock will produce them.
+          long long k_end = static_cast<long long>(std::ceil(next.t / sample_dt));
+          while (k_end > clock.k && static_cast<double>(k_end - 1) * sample_dt >= next.t) --k_end;
+          while (static_cast<double>(k_end) * sample_dt < next.t) ++k_end;
+          sample.t = clock.next();
+          sample.steps = s.steps, sample.rhs_evals = s.rhs_evals, sample.switches = s.switches;
+          const long used = obs.sample_affine(c, sample, static_cast<long>(clock.k), sample_dt,
+                                              static_cast<long>(k_end - clock.k), fa.data(), fb.data());
+          if (used > 0) {
+            clock.k += used;
+            if (obs.wants_stop()) {
+              const double t_last = static_cast<double>(clock.k - 1) * sample_dt;
+              quiet->evaluate(t_last, s.u.data(), s.v.data());
+              s.t = t_last;
+              return;
+            }
+            continue;
+          }
+        }
         sample.t = clock.next();
         quiet->sample(sample.t, sample.u.data(), sample.v.data(), ends_only);
         sample.steps = s.steps, sample.rhs_evals = s.rhs_evals, sample.switches = s.switches;

@@ -276,6 +276,31 @@ void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
   sample_valid_ = true;
 }
 
+double QuietPhase::all_dead_after() const {
+  double tau = 0;
+  for (const Segment& s : segs_) tau = std::max(tau, s.dead_tau);
+  return t0_ + tau;
+}
+
+void QuietPhase::affine_forces(const Chain& c, const double* u, double* a, double* b) const {
+  // A groove neighbour j of a contact block sits at A_j + B_j t; a stuck neighbour at u_j.
+  std::vector<double> gA(c.N, 0.0), gB(c.N, 0.0);
+  for (const Segment& sg : segs_)
+    for (int r = 0; r < sg.n; ++r) gA[sg.first + r] = A_[sg.offset + r], gB[sg.first + r] = B_[sg.offset + r];
+  for (int i = 0; i < c.N; ++i) {
+    a[i] = b[i] = 0.0;
+    if (!c.contact[i]) continue;
+    a[i] = -c.K_s * u[i];
+    b[i] = c.K_s * c.v_slider;
+    if (K_int_ > 0)
+      for (int j : {i - 1, i + 1}) {
+        if (j < 0 || j >= c.N) continue;
+        a[i] += K_int_ * ((c.contact[j] ? u[j] : gA[j]) - u[i]);
+        if (!c.contact[j]) b[i] += K_int_ * gB[j];
+      }
+  }
+}
+
 QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
   double best = t_limit - t0_;
   int block = -1;

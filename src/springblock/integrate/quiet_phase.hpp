@@ -60,6 +60,14 @@ class QuietPhase {
 
   int distinct_decompositions() const { return static_cast<int>(decomps_.size()); }
 
+  // The time after which every segment's modes are below round-off (evaluate() skips them):
+  // from then on every groove block is on its affine path and every contact block's force is
+  // affine in t.
+  double all_dead_after() const;
+  // Those forces, f_i(t) = a[i] + b[i] t for each contact block i (given the contact blocks'
+  // positions u; grooves get 0), valid after all_dead_after().
+  void affine_forces(const Chain& c, const double* u, double* a, double* b) const;
+
  private:
   struct Decomp {
     Eigen::MatrixXd Q;  // columns: orthonormal modes of K_seg

@@ -1,7 +1,9 @@
 #include "springblock/observe/friction_observer.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 
 namespace sb {
 
@@ -63,6 +65,70 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
     ++next_stress_;
   }
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(s.t * 1e9), std::memory_order_relaxed);
+}
+
+long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, double dt, long n, const double* a,
+                                     const double* b) {
+  // Series and stress snapshots want every sample's state: served one by one.
+  if (cfg_.keep_series || next_stress_ < cfg_.stress_times_s.size() || n <= 0) return 0;
+  if (contacts_.empty()) return 0;
+  auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
+  const double t_first = t_of(k0);
+  // The stretch ends before the first sample at which some block's force changes sign.
+  double A = 0, B = 0, As = 0, Bs = 0, t_sign = std::numeric_limits<double>::infinity();
+  for (int i : contacts_) {
+    const double f0 = a[i] + b[i] * t_first, sg = f0 >= 0 ? 1.0 : -1.0;
+    if (b[i] != 0.0 && (b[i] > 0) != (sg > 0)) t_sign = std::min(t_sign, -a[i] / b[i]);
+    A += sg * a[i], B += sg * b[i];
+    As += a[i], Bs += b[i];
+  }
+  long m = n;
+  while (m > 0 && t_of(k0 + m - 1) >= t_sign) --m;  // usually none: forces rarely change sign
+  if (m <= 0) return 0;
+  const double inv = 1.0 / cfg_.F_load;
+  auto mu = [&](long k) { return (A + B * t_of(k)) * inv; };
+  if (!slipped_) {
+    const bool all_slipped_rule = cfg_.peak_rule == ExtractionRules::PeakRule::AllSlipped;
+    // Nothing slips inside the stretch, so the all-slipped rule cannot end loading here (if it
+    // already holds, the first sample must end it: served by sample()).
+    if (all_slipped_rule && !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact) return 0;
+    long take = m;
+    if (!all_slipped_rule) {
+      // Drop rule: loading ends at the first sample below (running max - drop); the max of an
+      // affine sequence is at one end, so the running max is monotone: stop before any sample
+      // where mu falls below the max so far minus the drop (that one goes to sample()).
+      double rmax = running_max_;
+      for (take = 0; take < m; ++take) {
+        const double x = mu(k0 + take);
+        if (x < rmax - cfg_.peak_drop) break;
+        rmax = std::max(rmax, x);
+      }
+      if (take == 0) return 0;
+    }
+    // Running maximum over the samples taken: at one end of the stretch (first one on a tie).
+    const double first = mu(k0), last = mu(k0 + take - 1);
+    if (first > running_max_) running_max_ = first, t_max_ = t_of(k0);
+    if (last > running_max_) running_max_ = last, t_max_ = t_of(k0 + take - 1);
+    last_t_ = t_of(k0 + take - 1);
+    if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
+    return take;
+  }
+  // Dynamic phase: the window sums over the samples at or after its start.
+  const double t_win = t_slip_ + cfg_.mu_d_skip_s;
+  long j0 = 0;
+  while (j0 < m && t_of(k0 + j0) < t_win) ++j0;
+  const long cnt = m - j0;
+  if (cnt > 0) {
+    // sum over k of t_k = dt * (sum of k), exact in integers up to 2^53.
+    const long kk0 = k0 + j0, kk1 = k0 + m - 1;
+    const double sum_k = 0.5 * static_cast<double>(kk0 + kk1) * static_cast<double>(cnt);
+    sum_mu_ += (A * cnt + B * dt * sum_k) * inv;
+    sum_mu_signed_ += (As * cnt + Bs * dt * sum_k) * inv;
+    n_window_ += cnt;
+  }
+  last_t_ = t_of(k0 + m - 1);
+  if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
+  return m;
 }
 
 bool FrictionObserver::wants_stop() const {

@@ -43,6 +43,11 @@ class FrictionObserver final : public Observer {
  public:
   explicit FrictionObserver(FrictionObserverConfig cfg) : cfg_(std::move(cfg)) {}
   void sample(const Chain& chain, const State& state) override;
+  // mu(t) and mu_signed(t) are affine across such a stretch (up to the first sign change of a
+  // block's force): the running maximum, the end of loading and the mu_d window sums are then
+  // closed-form sums over the samples, O(1) per sample instead of O(contact blocks).
+  long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n, const double* a,
+                     const double* b) override;
   bool wants_stop() const override;
   // mu(t) and stress snapshots need only contact blocks' forces (their own and their direct
   // neighbours' positions); groove interiors are never read.

@@ -22,6 +22,16 @@ class Observer {
   // the stuck blocks' positions only, so an exact per-block integrator may leave the positions
   // of moving blocks unevaluated at samples.
   virtual bool reads_only_friction() const { return false; }
+  // A stretch of samples at t_k = k dt, k = k0 .. k0 + n - 1, across which nothing switches and
+  // every contact block's friction force is affine, f_i(t) = a[i] + b[i] t (s carries s.dir and
+  // the slip counters; its positions are not those of any sample). An observer may take a
+  // prefix of the stretch at once and return its length; the integrator serves the others one
+  // by one with sample(). The default takes none.
+  virtual long sample_affine(const Chain&, const State&, long k0, double dt, long n, const double* a,
+                             const double* b) {
+    (void)k0, (void)dt, (void)n, (void)a, (void)b;
+    return 0;
+  }
 };
 
 }  // namespace sb
