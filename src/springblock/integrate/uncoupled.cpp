@@ -52,7 +52,7 @@ struct Block {
 class Solver {
  public:
   Solver(const Chain& c, State& s, std::vector<double>* log)
-      : c_(c), s_(s), log_(log), b_(c.N), mode_{0.5 * c.gamma, c.K_s / c.m} {}
+      : c_(c), s_(s), log_(log), b_(c.N), mode_{0.5 * c.gamma, c.K_s / c.m}, fa_(c.N, 0.0), fb_(c.N, 0.0) {}
 
   void run(double t_end, double sample_dt, Observer& obs);
 
@@ -91,12 +91,20 @@ class Solver {
   // Apply the stick/slip rules to block i at time t (after its event, or at the start).
   void settle(int i, double t, bool event_here);
   void materialise(double t);
+  // Block i's friction force as a + b t until its next event: a stuck block's is its driving
+  // force K_s (v t - u_i), a sliding block's its constant kinetic friction (for sample_affine).
+  void update_friction(int i) {
+    if (!c_.contact[i]) return;
+    if (s_.dir[i] == 0) fa_[i] = -c_.K_s * s_.u[i], fb_[i] = c_.K_s * c_.v_slider;
+    else fa_[i] = s_.dir[i] * c_.f_kinetic[i], fb_[i] = 0.0;
+  }
 
   const Chain& c_;
   State& s_;
   std::vector<double>* log_;
   std::vector<Block> b_;
   DampedMode mode_;
+  std::vector<double> fa_, fb_;  // friction force of each block: fa + fb t between its events
   long long evals_ = 0;
   double instant_ = -1;
   long long at_instant_ = 0;
@@ -189,6 +197,7 @@ void Solver::settle(int i, double t, bool event_here) {
   at_instant_ += made;
   s_.switches += made;
   if (made > 0 && log_ && (log_->empty() || log_->back() != t)) log_->push_back(t);
+  update_friction(i);
   if (s_.dir[i] != 0) {
     start_moving(i, t, s_.dir[i] * c_.f_kinetic[i]);
     schedule(i, first_stop(i));
@@ -213,6 +222,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
     if (s_.dir[i] != 0) {
       start_moving(i, t0, s_.dir[i] * c_.f_kinetic[i]);
       schedule(i, first_stop(i));
+      update_friction(i);
     } else {
       settle(i, t0, false);
     }
@@ -245,6 +255,21 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       continue;
     }
     if (t_sample > t_end) break;
+    if (friction_only) {
+      // Until the next event every friction force is affine in t: the observer may take all
+      // the samples before it at once (samples k dt < t_event and <= t_end).
+      const double t_stop = std::min(t_event, std::nextafter(t_end, kInf));
+      long long k_end = static_cast<long long>(std::ceil(t_stop / sample_dt));
+      while (k_end > k && static_cast<double>(k_end - 1) * sample_dt >= t_stop) --k_end;
+      while (static_cast<double>(k_end) * sample_dt < t_stop) ++k_end;
+      const long used = obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k),
+                                          fa_.data(), fb_.data());
+      if (used > 0) {
+        k += used;
+        s_.t = static_cast<double>(k - 1) * sample_dt;
+        continue;
+      }
+    }
     sample(t_sample);
     ++k;
   }
