@@ -4,7 +4,9 @@
 //  * Active phase (some contact block slides): only the pieces of the chain that move are
 //    stepped (active_set.hpp: runs holding a sliding block, and grooves still ringing; settled
 //    grooves are affine in t and stuck blocks with no stepped neighbour have closed-form
-//    threshold times, which end the step exactly when they are due). Dormand-Prince 5(4) with
+//    threshold times, which end the step exactly when they are due; runs of at most
+//    modal_max_run blocks are propagated exactly by their modes and take no step at all, see
+//    modal_runs.hpp; with nothing left to step the loop jumps from event to event). Dormand-Prince 5(4) with
 //    error control (rtol = tol, atol = tol times the natural scales F_n/K_s and
 //    omega_s F_n/K_s). After each
 //    accepted trial step the continuous extension is searched for switching events (a sliding
@@ -13,7 +15,8 @@
 //    event time, every block whose event lies within 1e-12 of the step from it is switched at
 //    that instant (in block order), and integration restarts (the right-hand side has jumped).
 //  * Quiet phase (every contact block stuck): propagated exactly (quiet_phase.hpp); the next
-//    threshold crossing is found without stepping. Samples inside it are exact.
+//    threshold crossing is found without stepping. Samples inside it are exact; once its grooves
+//    have rung down, the observer may take them as one affine stretch (sample_affine).
 // Samples in the active phase are hit exactly by shortening the step that would pass them.
 // A chain without internal springs (K_int = 0) is solved exactly block by block instead
 // (uncoupled.hpp), unless fast-forward is off.
