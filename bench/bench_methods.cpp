@@ -39,6 +39,8 @@ void time_repetition(benchmark::State& st, const sb::Scene& s) {
   st.counters["rhs_evals"] = static_cast<double>(r.rhs_evals);
   st.counters["mu_s"] = r.mu_s;
   st.counters["switches"] = static_cast<double>(r.switches);
+  st.counters["steps"] = static_cast<double>(r.steps);
+  st.counters["mu_d"] = r.mu_d;
 }
 
 void bm_method(benchmark::State& st, std::string pattern, sb::Method m, double tol) {
@@ -80,6 +82,7 @@ void bm_modal(benchmark::State& st, std::string pattern, double gamma_per_s, dou
   s.run.method = sb::Method::Event;
   s.run.tol = 1e-9;
   s.run.modal_max_run = modal_max_run;
+  s.run.modal_max_groove = modal_max_run;  // as before the separate groove limit existed
   s.run.duration_t0 = fig2 ? 2.0 : 1.0;
   s.seed = 3;
   s.reps = 1;
@@ -87,7 +90,41 @@ void bm_modal(benchmark::State& st, std::string pattern, double gamma_per_s, dou
   time_repetition(st, s);
 }
 
+// Ringing grooves-only runs propagated by their modes (modal_max_groove) against stepping them,
+// at the default modal_max_run = 2, tol 1e-9, N = 360, 2 t0 (through the first macroscopic slip
+// into sliding, where grooves ring between slipping pawls): short grooves (1,3 and 3,3), the
+// 10-30 block grooves of the tables, 60-block grooves (beyond the default 32) and a hierarchy.
+void bm_modal_groove(benchmark::State& st, std::string pattern, int modal_max_groove) {
+  sb::Scene s;
+  s.geometry = sb::ChainGeometry{360, 0.072};
+  s.pattern = sb::parse_pattern(pattern);
+  s.run.method = sb::Method::Event;
+  s.run.tol = 1e-9;
+  s.run.modal_max_groove = modal_max_groove;
+  s.run.duration_t0 = 2.0;
+  s.seed = 3;
+  s.reps = 1;
+  sb::validate(s);
+  time_repetition(st, s);
+}
+
 }  // namespace
+
+#define SB_MODAL_GROOVE(id, pattern)                                                                  \
+  BENCHMARK_CAPTURE(bm_modal_groove, id##_g0, pattern, 0)                                             \
+      ->Name("modal_groove/" #id "/modal_max_groove0")->Unit(benchmark::kSecond)->Iterations(1);      \
+  BENCHMARK_CAPTURE(bm_modal_groove, id##_g12, pattern, 12)                                           \
+      ->Name("modal_groove/" #id "/modal_max_groove12")->Unit(benchmark::kSecond)->Iterations(1);     \
+  BENCHMARK_CAPTURE(bm_modal_groove, id##_g32, pattern, 32)                                           \
+      ->Name("modal_groove/" #id "/modal_max_groove32")->Unit(benchmark::kSecond)->Iterations(1);     \
+  BENCHMARK_CAPTURE(bm_modal_groove, id##_g64, pattern, 64)                                           \
+      ->Name("modal_groove/" #id "/modal_max_groove64")->Unit(benchmark::kSecond)->Iterations(1);
+SB_MODAL_GROOVE(periodic_1_3, "periodic:1,3")
+SB_MODAL_GROOVE(periodic_3_3, "periodic:3,3")
+SB_MODAL_GROOVE(periodic_10_10, "periodic:10,10")
+SB_MODAL_GROOVE(periodic_30_30, "periodic:30,30")
+SB_MODAL_GROOVE(periodic_60_60, "periodic:60,60")
+SB_MODAL_GROOVE(hierarchical_60_6_1, "hierarchical:60,6,1")
 
 #define SB_MODAL(id, pattern, gamma, mu_d)                                                              \
   BENCHMARK_CAPTURE(bm_modal, id##_m0, pattern, gamma, mu_d, 0)                                       \

@@ -73,6 +73,7 @@ def methods_table(path):
                   f"{ev['rhs_evals']:.3g}   mu_s {rk4['mu_s']:.5f} / {ev['mu_s']:.5f}")
 
     modal_table(rows)
+    modal_groove_table(rows)
 
 
 def modal_table(rows):
@@ -87,6 +88,22 @@ def modal_table(rows):
             ratio = f"x{base['real_time'] / r['real_time']:.2f}" if base else "?"
             print(f"{sc:22s} {name.split('/')[-1]:16s} {r['real_time']:7.3f} s   {ratio:7s} switches "
                   f"{r['switches']:.3g}   mu_s {r['mu_s']:.5f}")
+
+
+def modal_groove_table(rows):
+    """Ringing grooves-only runs propagated by their modes (modal_max_groove) against stepping them."""
+    scenes = sorted({name.split("/")[1] for name in rows if name.startswith("modal_groove/")})
+    if scenes:
+        print("\nModal groove runs, event tol 1e-9, N = 360, 2 t0, one repetition, seed 3 (median wall time)")
+    for sc in scenes:
+        base = rows.get(f"modal_groove/{sc}/modal_max_groove0")
+        names = sorted((k for k in rows if k.startswith(f"modal_groove/{sc}/")),
+                       key=lambda k: int(k.rsplit("groove", 1)[1]))
+        for name in names:
+            r = rows[name]
+            ratio = f"x{base['real_time'] / r['real_time']:.2f}" if base else "?"
+            print(f"{sc:22s} {name.split('/')[-1]:19s} {r['real_time']:7.3f} s   {ratio:7s} steps "
+                  f"{r.get('steps', float('nan')):.3g}   mu_s {r['mu_s']:.5f}   mu_d {r.get('mu_d', float('nan')):.5f}")
 
 
 if __name__ == "__main__":

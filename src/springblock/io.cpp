@@ -72,6 +72,7 @@ nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const 
           {"dt", scene.run.dt_s},
           {"tol", scene.run.tol},
           {"modal_max_run", scene.run.modal_max_run},
+          {"modal_max_groove", scene.run.modal_max_groove},
           {"duration", scene.duration()},
           {"wall_seconds", r.wall_s},
           {"threads", r.threads},

@@ -128,6 +128,7 @@ void validate(const Scene& s) {
   require(finite(r.tol) && r.tol >= 1e-14 && r.tol <= 1e-2, "tol", r.tol, "[1e-14, 1e-2]");
   require(finite(r.dt_s) && r.dt_s > 0 && r.dt_s <= 1, "dt", r.dt_s, "(0, 1 s]");
   require(r.modal_max_run >= 0 && r.modal_max_run <= 64, "modal_max_run", r.modal_max_run, "[0, 64]");
+  require(r.modal_max_groove >= 0 && r.modal_max_groove <= 64, "modal_max_groove", r.modal_max_groove, "[0, 64]");
   if (r.method == Method::RK4) {
     const double h_max = rk4_stable_dt(s.derived());
     if (r.dt_s > h_max)
@@ -224,6 +225,7 @@ void to_json(nlohmann::json& j, const Scene& s) {
                      {"dt_s", s.run.dt_s},
                      {"tol", s.run.tol},
                      {"modal_max_run", s.run.modal_max_run},
+                     {"modal_max_groove", s.run.modal_max_groove},
                      {"duration_s", s.duration()},
                      {"t0_s", s.t0_s()},
                      {"sample_dt_s", s.run.sample_dt_s},

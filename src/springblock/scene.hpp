@@ -40,6 +40,11 @@ struct RunControl {
   // event method: mobile runs of up to this many blocks are propagated exactly by their modes
   // rather than stepped (0: step every run). The default is the measured optimum (bench_methods).
   int modal_max_run = 2;
+  // event method: ringing groove-only runs (no contact block, so no stop to search for; only
+  // their stuck neighbours' crossings) of up to this many blocks are propagated by their modes
+  // too. Separate from modal_max_run because a groove run has no stop events: it pays off up to
+  // much longer runs (bench_methods, modal_groove/*).
+  int modal_max_groove = 32;
   // Run length in units of t0 = (mu_s)_m F_n / (K_s v), the time the slider needs to load an
   // average block to its threshold. Scaling with t0 keeps the number of stick-slip cycles the
   // same when the contact fraction (hence F_n) changes. duration_s > 0 overrides.

@@ -114,6 +114,12 @@ const std::vector<Entry>& entries() {
          if (n < 0 || n > 64) throw InputError(k, "modal_max_run = " + v + " is outside [0, 64]");
          s.run.modal_max_run = static_cast<int>(n);
        }},
+      {{"modal_max_groove", "event method: ringing groove-only runs of up to this many blocks are solved exactly by their modes, not stepped (default 32; 0 steps them)", "32"},
+       [](Scene& s, auto& k, auto& v) {
+         const auto n = integer(k, v);
+         if (n < 0 || n > 64) throw InputError(k, "modal_max_groove = " + v + " is outside [0, 64]");
+         s.run.modal_max_groove = static_cast<int>(n);
+       }},
       {{"duration", "simulated time: a time (e.g. 1s) or a multiple of t0 (e.g. 4t0, the default)", "4t0"},
        [](Scene& s, auto& k, auto& v) {
          if (v.size() > 2 && v.substr(v.size() - 2) == "t0") {

@@ -31,11 +31,12 @@ void solve_tridiag(std::vector<double>& diag, std::vector<double>& off, std::vec
 }  // namespace
 
 ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v, int modal_max_run,
-                     double t_end)
+                     int modal_max_groove, double t_end)
     : N_(c.N),
       K_int_(c.K_int),
       settle_grooves_(settle_grooves),
       modal_max_(settle_grooves && c.K_int > 0 ? modal_max_run : 0),
+      modal_max_groove_(settle_grooves && c.K_int > 0 ? modal_max_groove : 0),
       t_end_(t_end),
       modal_(c),
       dir_prev_(c.N, 0),
@@ -51,6 +52,13 @@ ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double 
       diag_(c.N),
       off_(c.N),
       rhs_(c.N) {
+  modal_.set_quiet_scales(eps_u_, eps_v_);
+  while (P_ < N_) P_ *= 2;
+  tree_.assign(2 * P_, -1);
+  for (int i = 0; i < N_; ++i) tree_[P_ + i] = i;
+  for (int n = P_ - 1; n >= 1; --n) tree_[n] = earlier(tree_[2 * n + 1], tree_[2 * n]) ? tree_[2 * n + 1] : tree_[2 * n];
+  tree_real_ = tree_;
+  dirty_.assign(N_, 0);
   runs_.reserve(c.N);
   stepped_.reserve(c.N);
   watched_.reserve(c.N);
@@ -116,6 +124,14 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
     runs_.push_back(r);
     i = j + 1;
   }
+  auto switched = [&](int i) {
+    return i >= 0 && i < N_ && (s.dir[i] != dir_prev_[i] || (touched != nullptr && touched[i]));
+  };
+  auto untouched = [&](Span sp) {
+    for (int i = sp.lo - 1; i <= sp.hi; ++i)
+      if (switched(i)) return false;
+    return true;
+  };
   for (Run& r : runs_) {
     if (r.grooves) {
       const std::uint8_t was = kind_[r.span.lo];
@@ -125,12 +141,18 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
       }
       // Was stepped or modal (ringing, or part of an active run) or never classified: new A, B.
       particular(c, s, r.span);
+      // A modal groove run that nothing in or beside it switched is kept, and was not brought
+      // to s.t (materialise_near): whether its transient is gone comes from its modes' envelope.
+      if (was == kModal && untouched(r.span) && modal_.same_run(r.span.lo, r.span.lo, r.span.hi)) {
+        r.kind = s.t >= modal_.quiet_after(r.span.lo) ? kSettled : kModal;
+        continue;
+      }
       if (settled_now(s, r.span)) {
         r.kind = kSettled;
         continue;
       }
     }
-    if (r.span.hi - r.span.lo <= modal_max_) r.kind = kModal;
+    if (r.span.hi - r.span.lo <= (r.grooves ? modal_max_groove_ : modal_max_)) r.kind = kModal;
   }
   kind_prev_.swap(kind_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
@@ -140,11 +162,8 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
 
   // Modal runs: a run none of whose blocks or stuck neighbours switched keeps its coordinates
   // and its blocks' stop times; the others are projected afresh at s.t.
-  auto switched = [&](int i) {
-    return i >= 0 && i < N_ && (s.dir[i] != dir_prev_[i] || (touched != nullptr && touched[i]));
-  };
   std::fill(fresh_.begin(), fresh_.end(), 0);
-  if (modal_max_ > 0) {
+  if (any_modal()) {
     modal_.begin(s);
     for (const Run& r : runs_) {
       if (r.kind != kModal) continue;
@@ -157,12 +176,26 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
   }
   // Events. Closed-form crossings and the kept modal events first, then the fresh modal
   // searches (finish_events).
+  // Only blocks that switched, changed kind or were projected afresh, and their neighbours, can
+  // have a new event time (the rules below do nothing for any other block), so only they are
+  // visited, in index order as a full pass would.
   pending_.clear();
-  for (int i = 0; i < N_; ++i) {
+  cand_.clear();
+  if (first_) {
+    for (int i = 0; i < N_; ++i) cand_.push_back(i);
+  } else {
+    int last = -1;
+    for (int i = 0; i < N_; ++i) {
+      if (s.dir[i] == dir_prev_[i] && kind_[i] == kind_prev_[i] && !fresh_[i] && (touched == nullptr || !touched[i]))
+        continue;
+      for (int j = std::max(i - 1, last + 1); j <= std::min(i + 1, N_ - 1); ++j) cand_.push_back(j), last = j;
+    }
+  }
+  for (int i : cand_) {
     if (!c.contact[i] || (s.dir[i] != 0 && kind_[i] != kModal)) {
-      t_cross_[i] = kInf, recheck_[i] = 0;
+      set_cross(i, kInf, false);
     } else if (s.dir[i] != 0) {
-      if (fresh_[i]) t_cross_[i] = kInf, recheck_[i] = 0, pending_.push_back(i);
+      if (fresh_[i]) set_cross(i, kInf, false), pending_.push_back(i);
     } else {
       // A stuck block keeps its event time unless something next to it changed: it does not
       // move, nor do its stuck neighbours, and a settled or kept modal neighbour follows the
@@ -183,15 +216,14 @@ bool ActiveSet::beside_modal(int i) const {
 }
 
 bool ActiveSet::refresh_stuck(const Chain& c, const State& s, int i) {
-  recheck_[i] = 0;
   if (K_int_ > 0)
     for (int j : {i - 1, i + 1})
       if (j >= 0 && j < N_ && kind_[j] == kStepped) {
-        t_cross_[i] = kInf;  // watched: the step's dense output finds its crossing
+        set_cross(i, kInf, false);  // watched: the step's dense output finds its crossing
         return true;
       }
   if (beside_modal(i)) {
-    t_cross_[i] = kInf;  // searched by finish_events
+    set_cross(i, kInf, false);  // searched by finish_events
     return false;
   }
   update_crossing(c, s, i);
@@ -213,8 +245,7 @@ void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit
     f = modal_.crossing_time(c, s, i, base, nb_B, limit);
   }
   // Cut off at the limit: search again from there if it ever becomes the next event.
-  t_cross_[i] = std::isfinite(f.t) ? f.t : f.limited ? limit : kInf;
-  recheck_[i] = !std::isfinite(f.t) && f.limited;
+  set_cross(i, std::isfinite(f.t) ? f.t : f.limited ? limit : kInf, !std::isfinite(f.t) && f.limited);
 }
 
 void ActiveSet::finish_events(const Chain& c, const State& s) {
@@ -234,8 +265,7 @@ void ActiveSet::finish_events(const Chain& c, const State& s) {
 
 void ActiveSet::recheck(const Chain& c, const State& s) {
   const int i = next_.block;
-  t_cross_[i] = kInf;
-  recheck_[i] = 0;
+  set_cross(i, kInf, false);
   fresh_[i] = 0;
   pending_.assign(1, i);
   finish_events(c, s);
@@ -262,7 +292,7 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
     for (int j : {i - 1, i + 1}) {
       if (j < 0 || j >= N_) continue;
       if (kind_[j] == kStepped) {  // watched instead: its force is not affine
-        t_cross_[i] = kInf;
+        set_cross(i, kInf, false);
         return;
       }
       if (kind_[j] == kSettled) {
@@ -276,22 +306,51 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
   // First time a + b tau reaches +-f_static. b = 0 (nothing loads it) never crosses.
   const double f = c.f_static[i];
   if (b == 0.0) {
-    t_cross_[i] = kInf;
+    set_cross(i, kInf, false);
     return;
   }
   const double tau = ((b > 0 ? f : -f) - a) / b;
-  t_cross_[i] = s.t + std::max(tau, 0.0);
+  set_cross(i, s.t + std::max(tau, 0.0), false);
+}
+
+void ActiveSet::set_cross(int i, double t, bool recheck) {
+  if (t_cross_[i] == t && (recheck_[i] != 0) == recheck) return;
+  t_cross_[i] = t;
+  recheck_[i] = recheck;
+  if (!dirty_[i]) dirty_[i] = 1, dirty_list_.push_back(i);
+}
+
+bool ActiveSet::earlier(int a, int b) const {
+  // The order a full scan in block order would give: earliest t; on a tie a real event before
+  // a recheck (which then searches on from there); then the lower block.
+  if (a < 0) return false;
+  if (b < 0) return true;
+  if (t_cross_[a] != t_cross_[b]) return t_cross_[a] < t_cross_[b];
+  if (recheck_[a] != recheck_[b]) return recheck_[a] < recheck_[b];
+  return a < b;
+}
+
+bool ActiveSet::earlier_real(int a, int b) const {
+  auto t = [&](int i) { return i < 0 || recheck_[i] ? kInf : t_cross_[i]; };
+  if (t(a) != t(b)) return t(a) < t(b);
+  return a >= 0 && (b < 0 || a < b);
 }
 
 void ActiveSet::refresh_next() {
-  // On a tie a real event goes before a recheck (which then searches on from there).
-  next_ = {kInf, -1, false};
-  next_event_t_ = kInf;
-  for (int i = 0; i < N_; ++i) {
-    const bool rc = recheck_[i] != 0;
-    if (t_cross_[i] < next_.t || (t_cross_[i] == next_.t && next_.recheck && !rc)) next_ = {t_cross_[i], i, rc};
-    if (!rc && t_cross_[i] < next_event_t_) next_event_t_ = t_cross_[i];
+  // Two tournament trees over the blocks (earliest event; earliest real event), brought up to
+  // date for the blocks whose time changed since the last call: O(changed log N), not O(N).
+  for (int i : dirty_list_) {
+    dirty_[i] = 0;
+    for (int n = (P_ + i) >> 1; n >= 1; n >>= 1) {
+      const int l = 2 * n, r = 2 * n + 1;
+      tree_[n] = earlier(tree_[r], tree_[l]) ? tree_[r] : tree_[l];
+      tree_real_[n] = earlier_real(tree_real_[r], tree_real_[l]) ? tree_real_[r] : tree_real_[l];
+    }
   }
+  dirty_list_.clear();
+  const int b = tree_[1], e = tree_real_[1];
+  next_ = (b >= 0 && t_cross_[b] < kInf) ? Next{t_cross_[b], b, recheck_[b] != 0} : Next{kInf, -1, false};
+  next_event_t_ = (e >= 0 && !recheck_[e]) ? t_cross_[e] : kInf;
 }
 
 bool ActiveSet::retire_settled(const Chain& c, const State& s) {
@@ -316,7 +375,7 @@ bool ActiveSet::retire_settled(const Chain& c, const State& s) {
   return true;
 }
 
-void ActiveSet::materialise(double t, double* u, double* v, bool at_sample) {
+void ActiveSet::materialise(double t, double* u, double* v, bool at_sample, bool ends_only) {
   for (const Run& r : runs_) {
     if (r.kind != kSettled) continue;
     for (int i = r.span.lo; i < r.span.hi; ++i) {
@@ -324,7 +383,33 @@ void ActiveSet::materialise(double t, double* u, double* v, bool at_sample) {
       v[i] = B_[i];
     }
   }
-  if (modal_max_ > 0) modal_.materialise(t, u, v, at_sample);
+  if (any_modal()) modal_.materialise(t, u, v, at_sample, ends_only);
+}
+
+void ActiveSet::materialise_near(double t, double* u, double* v, const std::vector<int>& blocks) {
+  int last_modal = -1;  // first block of the modal run written last (runs are visited in order)
+  done_.clear();
+  for (int b : blocks)
+    for (int j = b - 1; j <= b + 1; ++j) {
+      if (j < 0 || j >= N_) continue;
+      if (kind_[j] == kSettled) {
+        // The whole run: it may merge into a new run that is stepped or projected from s.u.
+        if (u[j] == A_[j] + B_[j] * t && v[j] == B_[j]) continue;  // written already
+        int lo = j, hi = j + 1;
+        while (lo > 0 && kind_[lo - 1] == kSettled) --lo;
+        while (hi < N_ && kind_[hi] == kSettled) ++hi;
+        for (int i = lo; i < hi; ++i) {
+          u[i] = A_[i] + B_[i] * t;
+          v[i] = B_[i];
+        }
+      } else if (kind_[j] == kModal) {
+        const int lo = modal_.run_start(j);
+        if (lo == last_modal || std::find(done_.begin(), done_.end(), lo) != done_.end()) continue;
+        modal_.materialise_run(j, t, u, v);
+        done_.push_back(lo);
+        last_modal = lo;
+      }
+    }
 }
 
 }  // namespace sb::event_detail

@@ -10,7 +10,8 @@
 //              only, so a groove far from the slip costs n, not N);
 //   * Settled  if it is grooves only and its transient is below the tolerance (see below):
 //              u = A + B t exactly, the affine particular solution (a tridiagonal solve);
-//   * Modal    if it is not settled and at most modal_max_run blocks long: propagated exactly
+//   * Modal    if it is not settled and at most modal_max_run blocks long (modal_max_groove
+//              for a grooves-only run, which has no stop to search): propagated exactly
 //              by its modes with no time step (modal_runs.hpp), its stops and its stuck
 //              neighbours' crossings found by EdgeMarch. A creeping block (mu_d clipped to
 //              mu_s) that never stops then costs nothing between its neighbours' switches.
@@ -23,7 +24,7 @@
 // A settled run drops a transient smaller than 0.1 times the stepper's absolute tolerance (in u
 // and in v); it keeps decaying, so the error committed is below one step's.
 // With settle_grooves = false no run is ever settled or modal (the reference mode used by the
-// tests). modal_max_run = 0 turns modal runs off.
+// tests). modal_max_run = modal_max_groove = 0 turns modal runs off.
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -43,7 +44,7 @@ struct Span {
 class ActiveSet {
  public:
   ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v, int modal_max_run = 0,
-            double t_end = std::numeric_limits<double>::infinity());
+            int modal_max_groove = 0, double t_end = std::numeric_limits<double>::infinity());
   void set_sample_dt(double dt) { modal_.set_sample_dt(dt); }
 
   // Classify the runs after a switch at s.t (every settled and modal run already materialised
@@ -66,8 +67,16 @@ class ActiveSet {
   double modal_u(int i, double t) const { return modal_.u(i, t); }
 
   // Write the settled and modal runs' exact u, v at time t into u, v (at_sample: t is a sample
-  // time, see ModalRuns::materialise).
-  void materialise(double t, double* u, double* v, bool at_sample = false);
+  // time; ends_only: grooves-only modal runs write their end rows only, see
+  // ModalRuns::materialise).
+  void materialise(double t, double* u, double* v, bool at_sample = false, bool ends_only = false);
+  // The same for only what a switch of the given blocks reads: each block and its two
+  // neighbours, and the whole modal run any of them is in (it may be projected afresh).
+  // Between switches the u, v of settled and modal blocks in the state are not kept current:
+  // nothing reads them there (the stepper reads stepped runs and their stuck borders, the event
+  // searches use settled_u / modal_u); the loop materialises everything at samples, before a
+  // quiet phase and at the end of the run.
+  void materialise_near(double t, double* u, double* v, const std::vector<int>& blocks);
   int modal_runs() const { return modal_.count(); }
 
   // After an accepted step at s.t: ringing runs whose transient has died become settled and
@@ -108,16 +117,22 @@ class ActiveSet {
   // otherwise closed form). Returns false if it borders a modal run (search it instead).
   bool refresh_stuck(const Chain& c, const State& s, int i);
   bool beside_modal(int i) const;
+  bool any_modal() const { return modal_max_ > 0 || modal_max_groove_ > 0; }
   // Modal event search of block i up to limit (stop if sliding, threshold crossing if stuck).
   void search_modal(const Chain& c, const State& s, int i, double limit);
   // refresh_next, then the pending modal searches, each limited by the earliest event so far.
   void finish_events(const Chain& c, const State& s);
   void refresh_next();
+  // Every write of an event time goes through here (marks the block for refresh_next).
+  void set_cross(int i, double t, bool recheck);
+  bool earlier(int a, int b) const;       // event order of blocks a, b (-1: none)
+  bool earlier_real(int a, int b) const;  // the same ignoring rechecks
 
   int N_;
   double K_int_;
   bool settle_grooves_;
-  int modal_max_;
+  int modal_max_;         // longest modal run holding a contact block
+  int modal_max_groove_;  // longest modal grooves-only run
   double t_end_;
   ModalRuns modal_;
   std::vector<std::int8_t> dir_prev_;   // s.dir at the previous rebuild
@@ -132,6 +147,12 @@ class ActiveSet {
   std::vector<std::uint8_t> recheck_;  // per block: t_cross_ is where a modal search was cut off
   std::vector<std::uint8_t> fresh_;    // per block: in a modal run projected afresh at this rebuild
   std::vector<int> pending_;           // blocks whose modal search is due
+  std::vector<int> done_;              // materialise_near: modal runs written (first blocks)
+  std::vector<int> cand_;              // rebuild: blocks whose event time may have changed
+  int P_ = 1;                          // leaves of the event trees (a power of two >= N)
+  std::vector<int> tree_, tree_real_;  // tournament trees: node -> block (-1: none)
+  std::vector<std::uint8_t> dirty_;    // per block: event time changed since refresh_next
+  std::vector<int> dirty_list_;
   std::vector<double> diag_, off_, rhs_;  // tridiagonal work arrays
   Next next_{0, -1, false};
   double next_event_t_ = 0;  // earliest real event (rechecks excluded)

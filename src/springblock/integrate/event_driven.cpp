@@ -29,7 +29,7 @@ struct SampleClock {
 
 template <bool Coupled, bool Damped>
 void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, double tol,
-              bool fast_forward, int modal_max_run, std::vector<double>* log_) {
+              bool fast_forward, int modal_max_run, int modal_max_groove, std::vector<double>* log_) {
   const int N = c.N;
   // Error scales: the spring stretch at the threshold, F_n / K_s, and the velocity of an
   // oscillation of that amplitude at the slider frequency.
@@ -44,7 +44,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   Switching sw(N);
   // Settled grooves are a form of fast-forward (they drop a transient below the tolerance), so
   // they follow the same switch; the closed-form crossings of stuck blocks are exact either way.
-  ActiveSet active(c, fast_forward, atol_u, atol_v, modal_max_run, t_end);
+  ActiveSet active(c, fast_forward, atol_u, atol_v, modal_max_run, modal_max_groove, t_end);
   active.set_sample_dt(sample_dt);
   std::unique_ptr<QuietPhase> quiet;
   if (fast_forward) {
@@ -63,9 +63,15 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     sw.clear_touched();
     dp.set_frozen(s.u.data());
   };
-  // Settle the switches flagged at s.t (settled grooves first brought to s.t).
+  // Settle the switches flagged at s.t. Only the exact runs the switch reads or re-projects are
+  // brought to s.t first, unless the switch may stop every sliding block (only flagged blocks
+  // switch): a quiet phase begins from the whole state. (Not after settling: that would
+  // overwrite the v = 0 of the blocks that just stopped.)
   auto switch_now = [&] {
-    active.materialise(s.t, s.u.data(), s.v.data());
+    if (static_cast<std::size_t>(sw.n_sliding()) <= sw.flagged().size())
+      active.materialise(s.t, s.u.data(), s.v.data());
+    else
+      active.materialise_near(s.t, s.u.data(), s.v.data(), sw.flagged());
     if (sw.settle(c, s) > 0 && log_) log_->push_back(s.t);
     reclassify();
   };
@@ -86,7 +92,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   };
   auto sample_if_due = [&] {
     if (s.t == clock.next()) {
-      active.materialise(s.t, s.u.data(), s.v.data(), true);
+      active.materialise(s.t, s.u.data(), s.v.data(), true, ends_only);
       obs.sample(c, s);
       ++clock.k;
     }
@@ -257,11 +263,11 @@ void EventDriven::run(const Chain& c, State& s, double t_end, double sample_dt, 
     event_detail::run_uncoupled(c, s, t_end, sample_dt, obs, switch_log_);
     return;
   }
-  const int mm = modal_max_run_;
-  if (e.coupled && e.damped) run_loop<true, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, switch_log_);
-  else if (e.coupled) run_loop<true, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, switch_log_);
-  else if (e.damped) run_loop<false, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, switch_log_);
-  else run_loop<false, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, switch_log_);
+  const int mm = modal_max_run_, mg = modal_max_groove_;
+  if (e.coupled && e.damped) run_loop<true, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, mg, switch_log_);
+  else if (e.coupled) run_loop<true, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, mg, switch_log_);
+  else if (e.damped) run_loop<false, true>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, mg, switch_log_);
+  else run_loop<false, false>(c, s, t_end, sample_dt, obs, tol_, fast_forward_, mm, mg, switch_log_);
 }
 
 }  // namespace sb

@@ -40,11 +40,15 @@ class EventDriven final : public Integrator {
   // stepped (active_set.hpp, modal_runs.hpp); 0 steps every run. Only with fast-forward on.
   void set_modal_max_run(int n) { modal_max_run_ = n; }
   static constexpr int kDefaultModalMaxRun = 2;
+  // Ringing groove-only runs up to this many blocks are modal too (they have no stops to search).
+  void set_modal_max_groove(int n) { modal_max_groove_ = n; }
+  static constexpr int kDefaultModalMaxGroove = 32;
 
  private:
   double tol_;
   bool fast_forward_;
   int modal_max_run_ = kDefaultModalMaxRun;
+  int modal_max_groove_ = kDefaultModalMaxGroove;
   std::vector<double>* switch_log_ = nullptr;
 };
 

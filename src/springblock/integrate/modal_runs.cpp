@@ -131,6 +131,10 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep) {
     acc0_[lo + k] = -c.gamma * pk - b.modes[k].omega2 * qk;
   }
   Run run{lo, hi, &b, s.t, s.t, 0, false, true};
+  bool grooves = true;
+  for (int i = lo; i < hi; ++i) grooves = grooves && !c.contact[i];
+  run.grooves = grooves;
+  if (grooves) run.quiet_after = s.t + envelope_time(run);
   if (old >= 0 && runs_[old].lo == lo && !runs_[old].live) {
     // Reuse the slot of the old run that started here; its blocks are re-marked by end().
     for (int i = runs_[old].lo; i < runs_[old].hi; ++i) run_of_[i] = -1;
@@ -139,6 +143,27 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep) {
     runs_.push_back(run);
   }
   return true;
+}
+
+double ModalRuns::envelope_time(const Run& r) const {
+  // Mode k: q = e^{-alpha tau} (q0 cos w tau + (P / w) sin w tau), P = p0 + alpha q0, so
+  // |q| <= e^{-alpha tau} Cq with Cq = hypot(q0, P / w), and q' = -alpha q + e^{-alpha tau}
+  // (P cos - (w^2 q0 / w) sin) gives |q'| <= e^{-alpha tau} (alpha Cq + hypot(P, w q0)). Rows mix
+  // modes with |Q| <= 1, so the sums over modes bound every row. All modes share alpha.
+  if (!(eps_u_ > 0) || !(eps_vq_ > 0)) return std::numeric_limits<double>::infinity();
+  double su = 0, sv = 0, alpha = 0;
+  for (int k = 0; k < r.hi - r.lo; ++k) {
+    const DampedMode& m = r.basis->modes[k];
+    const double s = m.omega2 - m.alpha * m.alpha;
+    // No bound for undamped or nearly critical modes: the run stays modal (exact) instead.
+    if (!(m.alpha > 0) || !(s > 0.25 * m.omega2)) return std::numeric_limits<double>::infinity();
+    const double w = std::sqrt(s), q0 = q0_[r.lo + k], P = p0_[r.lo + k] + m.alpha * q0;
+    const double Cq = std::hypot(q0, P / w);
+    su += Cq;
+    sv += m.alpha * Cq + std::hypot(P, w * q0);
+    alpha = m.alpha;
+  }
+  return std::max({0.0, std::log(su / eps_u_) / alpha, std::log(sv / eps_vq_) / alpha});
 }
 
 void ModalRuns::end() {
@@ -168,7 +193,21 @@ double ModalRuns::u(int i, double t) const {
   return x;
 }
 
-void ModalRuns::materialise(double t, double* u, double* v, bool at_sample) {
+void ModalRuns::rows(const Run& r, double t, const double* q, const double* qd, int r0, int r1, int dr, double* u,
+                     double* v) const {
+  const int n = r.hi - r.lo;
+  for (int row = r0; row < r1; row += dr) {
+    double x = A_[r.lo + row] + B_[r.lo + row] * t, y = B_[r.lo + row];
+    for (int k = 0; k < n; ++k) {
+      x += r.basis->Q(row, k) * q[k];
+      y += r.basis->Q(row, k) * qd[k];
+    }
+    u[r.lo + row] = x;
+    v[r.lo + row] = y;
+  }
+}
+
+void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool ends_only) {
   for (Run& r : runs_) {
     const int n = r.hi - r.lo;
     double* q = qc_.data() + r.lo;
@@ -193,16 +232,17 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample) {
       q = sq, qd = sqd;
     }
     if (at_sample) r.tc = t, r.cursor = true;
-    for (int row = 0; row < n; ++row) {
-      double x = A_[r.lo + row] + B_[r.lo + row] * t, y = B_[r.lo + row];
-      for (int k = 0; k < n; ++k) {
-        x += r.basis->Q(row, k) * q[k];
-        y += r.basis->Q(row, k) * qd[k];
-      }
-      u[r.lo + row] = x;
-      v[r.lo + row] = y;
-    }
+    if (ends_only && r.grooves && n > 2) rows(r, t, q, qd, 0, n, n - 1, u, v);
+    else rows(r, t, q, qd, 0, n, 1, u, v);
   }
+}
+
+void ModalRuns::materialise_run(int i, double t, double* u, double* v) {
+  const Run& r = runs_[run_of_[i]];
+  double* sq = cq_.data() + r.lo;
+  double* sqd = cp_.data() + r.lo;
+  coords(r, t, sq, sqd);
+  rows(r, t, sq, sqd, 0, r.hi - r.lo, 1, u, v);
 }
 
 ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, bool fresh, double t_limit) {

@@ -20,6 +20,7 @@
 // event times across switches elsewhere: a switch costs only the runs it touches.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -47,13 +48,30 @@ class ModalRuns {
   bool add(const Chain& c, const State& s, int lo, int hi, bool keep);
   // Drop the runs not registered since begin().
   void end();
+  // Transients below these (in u and v, every row) count as gone: see quiet_after().
+  void set_quiet_scales(double eps_u, double eps_v) { eps_u_ = eps_u, eps_vq_ = eps_v; }
+  // For the run holding block i: a time after which its deviation from the affine path is
+  // below the quiet scales in every row (from each mode's exponential envelope at projection;
+  // +inf without damping or with a mode not clearly underdamped, where no bound is taken).
+  // Lets the active set settle a kept groove run without evaluating it.
+  double quiet_after(int i) const { return runs_[run_of_[i]].quiet_after; }
+  // True if block i is in a modal run spanning exactly [lo, hi).
+  bool same_run(int i, int lo, int hi) const {
+    return run_of_[i] >= 0 && runs_[run_of_[i]].lo == lo && runs_[run_of_[i]].hi == hi;
+  }
 
   bool holds(int i) const { return run_of_[i] >= 0; }
+  // First block of the run holding block i.
+  int run_start(int i) const { return runs_[run_of_[i]].lo; }
   // Exact u (and v) of a block in a modal run at time t (direct evaluation).
   double u(int i, double t) const;
   // Write every modal run's exact u, v at t. at_sample: t is a sample time, so the modal
-  // coordinates may be advanced by the sample recurrence and kept as its new start.
-  void materialise(double t, double* u, double* v, bool at_sample);
+  // coordinates may be advanced by the sample recurrence and kept as its new start. ends_only:
+  // a grooves-only run writes only its two end rows (the ones a contact block's force reads),
+  // O(n) instead of O(n^2); its interior is left stale.
+  void materialise(double t, double* u, double* v, bool at_sample, bool ends_only = false);
+  // Write the exact u, v at t (off the sample grid) of the run holding block i only.
+  void materialise_run(int i, double t, double* u, double* v);
 
   // Event searches from s.t up to t_limit. t = +inf when there is none before t_limit;
   // limited then says whether one may follow later (search again from t_limit).
@@ -88,13 +106,20 @@ class ModalRuns {
     int since = 0;    // recurrence steps since the cursor was last set from the closed form
     bool cursor = false;
     bool live = true;  // registered in the current classification
+    bool grooves = false;  // no contact block in it
+    double quiet_after = std::numeric_limits<double>::infinity();
   };
+  // Rows of run r from modal coordinates q, qd at time t into u, v (rows [r0, r1) stepping by dr).
+  void rows(const Run& r, double t, const double* q, const double* qd, int r0, int r1, int dr, double* u,
+            double* v) const;
+  double envelope_time(const Run& r) const;
   const Basis& basis(const Chain& c, int n, bool left, bool right);
   // Modal coordinates of run r at time t into q, qd (per mode, indices lo.. of the flat arrays).
   void coords(const Run& r, double t, double* q, double* qd) const;
 
   int N_;
   double K_int_, eps_v_, H_, sample_dt_ = 0;
+  double eps_u_ = 0, eps_vq_ = 0;  // quiet scales (set_quiet_scales)
   std::map<std::tuple<int, bool, bool>, Basis> bases_;
   std::vector<Run> runs_;
   std::vector<int> run_of_;                  // block -> index in runs_ (-1: not in a modal run)

@@ -36,6 +36,8 @@ class Switching {
   void flag(int i) {
     if (!flagged_[i]) flagged_[i] = 1, flag_list_.push_back(i);
   }
+  // The blocks flagged since the last settle(), in flagging order.
+  const std::vector<int>& flagged() const { return flag_list_; }
   // Apply the rules at s.t; returns the number of switches made. Throws on a cascade.
   int settle(const Chain& c, State& s, bool full = false);
   // Rebuild mobile / f_kin from s.dir (at the start of a run).
