@@ -299,6 +299,54 @@ TEST(EventIntegrator, ModalGrooveRunsAgreeWithStepping) {
   }
 }
 
+// The same friction observer, but asking for every groove row: quiet-phase samples then keep
+// the groove modes to round-off instead of dropping them below the settle scales.
+class EveryRow final : public sb::Observer {
+ public:
+  explicit EveryRow(sb::FrictionObserver& inner) : inner_(inner) {}
+  void sample(const sb::Chain& c, const sb::State& s) override { inner_.sample(c, s); }
+  bool wants_stop() const override { return inner_.wants_stop(); }
+  bool reads_groove_interiors() const override { return true; }
+
+ private:
+  sb::FrictionObserver& inner_;
+};
+
+TEST(EventIntegrator, SampleScalesChangeNoResult) {
+  // Samples for a contact-force observer drop a quiet phase's groove modes once they are below
+  // the settle scales (QuietPhase::set_sample_scales); the dynamics keeps them, so the switching
+  // history must be identical. A dropped transient is at most eps_u per groove end when dropped
+  // and decays after, so the sampled mu_s and mu_d must stay within 1e-3 of the stepper's
+  // tolerance (1e-12) of the samples that keep it (measured: equal to all 15 digits; scales
+  // 1e6 times larger move mu_d by 5e-11 and fail).
+  sb::Scene sc = small_scene(120, "periodic:4,16");
+  sc.run.stop_after_mu_s = false;
+  sc.run.duration_t0 = 3.0;
+  const sb::Chain c = sb::build_chain(sc, 0);
+  sb::FrictionObserverConfig cfg;
+  cfg.F_load = c.F_load;
+  cfg.peak_drop = sc.rules.peak_drop;
+  cfg.mu_d_skip_s = 0.25 * sc.t0_s();
+  sb::FrictionObserver dropped(cfg), kept(cfg);
+  EveryRow every(kept);
+  sb::EventDriven e1(1e-9), e2(1e-9);
+  std::vector<double> log1, log2;
+  e1.set_switch_log(&log1);
+  e2.set_switch_log(&log2);
+  sb::State s1 = sb::State::at_rest(c), s2 = sb::State::at_rest(c);
+  e1.run(c, s1, sc.duration(), sc.run.sample_dt_s, dropped);
+  e2.run(c, s2, sc.duration(), sc.run.sample_dt_s, every);
+  std::printf("periodic:4,16 N=120 3 t0: mu_s %.15f / %.15f  mu_d %.15f / %.15f  window %zu / %zu\n",
+              dropped.mu_s(), kept.mu_s(), dropped.mu_d(), kept.mu_d(), dropped.window_samples(),
+              kept.window_samples());
+  ASSERT_TRUE(dropped.slipped());
+  EXPECT_EQ(log1, log2);
+  EXPECT_NEAR(dropped.mu_s(), kept.mu_s(), 1e-12);
+  EXPECT_NEAR(dropped.mu_d(), kept.mu_d(), 1e-12);
+  EXPECT_EQ(dropped.window_samples(), kept.window_samples());
+  EXPECT_EQ(dropped.t_peak(), kept.t_peak());
+}
+
 TEST(EventIntegrator, CreepingBlocksInModalRunsDoNotStutter) {
   // With (mu_d)_m = 0.9 and the clip policy about one block in six has mu_d = mu_s: once it
   // slides it creeps, and without damping its velocity touches zero once per period. The modal

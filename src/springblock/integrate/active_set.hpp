@@ -78,6 +78,9 @@ class ActiveSet {
   // quiet phase and at the end of the run.
   void materialise_near(double t, double* u, double* v, const std::vector<int>& blocks);
   int modal_runs() const { return modal_.count(); }
+  // The settle scales: a grooves-only run's transient below these (in u and v) is dropped.
+  double settle_eps_u() const { return eps_u_; }
+  double settle_eps_v() const { return eps_v_; }
 
   // After an accepted step at s.t: ringing runs whose transient has died become settled and
   // leave the stepped set. Returns true when the stepped set changed.

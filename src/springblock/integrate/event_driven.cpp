@@ -56,6 +56,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   // An observer that reads only contact blocks' forces needs the groove segments' end rows at
   // quiet-phase samples (O(N) per sample instead of O(sum n^2) for long grooves).
   const bool ends_only = !obs.reads_groove_interiors();
+  if (quiet && ends_only) quiet->set_sample_scales(active.settle_eps_u(), active.settle_eps_v());
 
   // After every switch: which runs are stepped, which stuck blocks are watched.
   auto reclassify = [&] {

@@ -156,6 +156,12 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
     s.dead_tau = std::numeric_limits<double>::infinity();
     if (decays && uscale > 0 && vscale > 0)
       s.dead_tau = std::max({0.0, std::log(amp / (1e-17 * uscale)) / alpha, std::log(vamp / (1e-17 * vscale)) / alpha});
+    // For samples only: the modes are dropped once below the settle scales (the bound on every
+    // row is amp e^{-alpha tau}, on every velocity vamp e^{-alpha tau}).
+    s.sample_dead_tau = s.dead_tau;
+    if (decays && sample_eps_u_ > 0 && sample_eps_v_ > 0)
+      s.sample_dead_tau = std::min(s.dead_tau, std::max({0.0, std::log(amp / sample_eps_u_) / alpha,
+                                                         std::log(vamp / sample_eps_v_) / alpha}));
   }
   for (std::size_t k = 0; k < affine_blocks_.size(); ++k)
     affine_a_[k] = c.driving_force(affine_blocks_[k], u, v, t0);
@@ -248,7 +254,9 @@ void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
                     ++since_sync_ < 64;
   if (!step) since_sync_ = 0;
   for (const Segment& s : segs_) {
-    const bool live = tau <= s.dead_tau;
+    // An observer that reads only contact forces (ends_only) takes the modes as gone once they
+    // are below the settle scales; one that reads every row gets them to round-off.
+    const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
     double* q = qs_.data() + s.offset;
     double* qd = qds_.data() + s.offset;
     if (live) {
@@ -278,7 +286,7 @@ void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
 
 double QuietPhase::all_dead_after() const {
   double tau = 0;
-  for (const Segment& s : segs_) tau = std::max(tau, s.dead_tau);
+  for (const Segment& s : segs_) tau = std::max(tau, s.sample_dead_tau);
   return t0_ + tau;
 }
 

@@ -60,8 +60,15 @@ class QuietPhase {
 
   int distinct_decompositions() const { return static_cast<int>(decomps_.size()); }
 
-  // The time after which every segment's modes are below round-off (evaluate() skips them):
-  // from then on every groove block is on its affine path and every contact block's force is
+  // Samples for an observer of contact forces only (sample() with ends_only, sample_affine) drop a
+  // segment's modes once every row's transient is below eps_u in u and eps_v in v: the active
+  // set's settle scales (0.1 x the stepper's absolute tolerances), so a sample's forces carry at
+  // most K_int eps_u per contact block beside a groove. The dynamics (evaluate, next_threshold)
+  // keeps them to round-off. Without this call samples keep them to round-off too.
+  void set_sample_scales(double eps_u, double eps_v) { sample_eps_u_ = eps_u, sample_eps_v_ = eps_v; }
+
+  // The time after which every segment's modes are below the sample scales: from then on every
+  // groove block is on its affine path as far as samples go, and every contact block's force is
   // affine in t.
   double all_dead_after() const;
   // Those forces, f_i(t) = a[i] + b[i] t for each contact block i (given the contact blocks'
@@ -79,6 +86,7 @@ class QuietPhase {
     int first, n, decomp, offset;  // offset into the flat per-phase arrays
     bool left_stuck, right_stuck;
     double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
+    double sample_dead_tau = 0;  // after this they are below the sample scales (samples skip them)
   };
   // A contact block and the segments it borders: its force is a + b tau + modal part.
   struct Edge {
@@ -108,6 +116,7 @@ class QuietPhase {
   std::vector<double> qs_, qds_;  // modal coordinates at the last sample
   std::vector<int> order_;        // edges by increasing lower bound
   double sample_dt_ = 0, ts_ = 0;
+  double sample_eps_u_ = 0, sample_eps_v_ = 0;
   int since_sync_ = 0;
   bool sample_valid_ = false;
 };
