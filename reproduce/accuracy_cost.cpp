@@ -94,7 +94,9 @@ const nlohmann::json* find_reference(const nlohmann::json& scenes, const std::st
 double num(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
 
 // Error table: per setting and study, cost (wall seconds, rhs evaluations) and error against the
-// reference. First peak: max over seeds of |mu_s - ref| and |t_slip - ref|. mu_d: |mean - ref|
+// reference. The scenes share one pool of threads (repro::run_target), so a setting's wall
+// seconds are its repetitions' wall times summed and divided by the thread count: what it costs
+// on this machine, without the idle tail of a scene whose 3 seeds do not split over 2 threads. First peak: max over seeds of |mu_s - ref| and |t_slip - ref|. mu_d: |mean - ref|
 // divided by the reference's standard error.
 void finish(const repro::Context&, nlohmann::json& doc) {
   nlohmann::json table = nlohmann::json::array();

@@ -257,31 +257,31 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
 
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
-  double total = 0, done = 0;
-  for (auto& s : scenes) total += cost(s.scene);
   nlohmann::json records = nlohmann::json::array();
   try {
-    for (std::size_t k = 0; k < scenes.size(); ++k) {
-      const auto& ls = scenes[k];
-      const double w = cost(ls.scene);
-      auto progress = [&](double fraction, double) {
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-        const double f = (done + fraction * w) / total;
-        const std::string eta = f > 0.01 ? format_seconds(elapsed * (1 - f) / f) : "?";
-        std::fprintf(stderr, "\r[%s] scene %zu/%zu %-22s %5.1f%% | total %5.1f%% elapsed %s ETA %s   ",
-                     target.c_str(), k + 1, scenes.size(), ls.id.c_str(), 100 * fraction, 100 * f,
-                     format_seconds(elapsed).c_str(), eta.c_str());
-        std::fflush(stderr);
-      };
-      progress(0, 0);
-      auto result = sb::run_ensemble(ls.scene, &g_interrupt, progress);
-      if (result.interrupted) {
+    // All scenes' repetitions in one pool (sb::run_ensembles): the threads never wait at the
+    // end of a scene. Progress and ETA are over the whole target, scenes weighted by cost().
+    std::vector<sb::Scene> pool;
+    std::vector<double> weights;
+    for (const auto& ls : scenes) pool.push_back(ls.scene), weights.push_back(cost(ls.scene));
+    auto progress = [&](double f, double elapsed) {
+      const std::string eta = f > 0.01 ? format_seconds(elapsed * (1 - f) / f) : "?";
+      std::fprintf(stderr, "\r[%s] %zu scenes, %5.1f%% elapsed %s ETA %s   ", target.c_str(), scenes.size(),
+                   100 * f, format_seconds(elapsed).c_str(), eta.c_str());
+      std::fflush(stderr);
+    };
+    progress(0, 0);
+    auto results = sb::run_ensembles(pool, &g_interrupt, progress, weights);
+    for (const auto& r : results)
+      if (r.interrupted) {
         std::fprintf(stderr, "\n%s: interrupted; nothing written, existing output untouched\n", target.c_str());
         return 130;
       }
-      progress(1, 0);
-      done += w;
-      std::fprintf(stderr, "\n[%s]   %s: mu_s = %.4f +- %.4f, mu_d = %.4f +- %.4f (%.1fs)\n", target.c_str(),
+    std::fprintf(stderr, "\n");
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+      const auto& ls = scenes[k];
+      const auto& result = results[k];
+      std::fprintf(stderr, "[%s]   %s: mu_s = %.4f +- %.4f, mu_d = %.4f +- %.4f (%.1fs of the pool)\n", target.c_str(),
                    ls.id.c_str(), result.mu_s.mean, result.mu_s.sem, result.mu_d.mean, result.mu_d.sem,
                    result.wall_s);
       records.push_back(scene_record(ls, result, opt.command_line));

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -74,60 +75,10 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
   return r;
 }
 
-EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interrupt,
-                            std::function<void(double, double)> progress) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  EnsembleResult out;
-  out.runs.resize(scene.reps);
-  std::vector<std::atomic<std::int64_t>> progress_ns(scene.reps);
-  std::vector<char> finished(scene.reps, 0);
-  const double total_ns = scene.duration() * 1e9 * scene.reps;
+namespace {
 
-  std::mutex mu;
-  std::condition_variable cv;
-  bool done = false;
-  std::thread reporter;
-  if (progress) {
-    reporter = std::thread([&] {
-      std::unique_lock lock(mu);
-      while (!cv.wait_for(lock, std::chrono::seconds(1), [&] { return done; })) {
-        double ns = 0;
-        for (auto& p : progress_ns) ns += static_cast<double>(p.load(std::memory_order_relaxed));
-        progress(ns / total_ns,
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
-      }
-    });
-  }
-
-  const int threads = scene.threads > 0 ? scene.threads : omp_get_max_threads();
-  out.threads = std::min(threads, scene.reps);
-  // An exception may not leave an OpenMP region (that is std::terminate): record it, let the
-  // other threads skip their remaining repetitions, and rethrow the lowest-index one afterwards.
-  std::vector<std::exception_ptr> errors(scene.reps);
-  std::atomic<bool> failed{false};
-#pragma omp parallel for schedule(dynamic, 1) num_threads(out.threads)
-  for (int rep = 0; rep < scene.reps; ++rep) {
-    if ((interrupt && interrupt->load()) || failed.load()) continue;
-    try {
-      out.runs[rep] = run_repetition(scene, rep, interrupt, &progress_ns[rep]);
-      // A repetition cut short by an interrupt is not a result.
-      finished[rep] = !(interrupt && interrupt->load());
-    } catch (...) {
-      errors[rep] = std::current_exception();
-      failed.store(true);
-    }
-  }
-  {
-    std::lock_guard lock(mu);
-    done = true;
-  }
-  cv.notify_all();
-  if (reporter.joinable()) reporter.join();
-
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
-  for (char f : finished) out.finished_reps += f;
-  out.interrupted = out.finished_reps < scene.reps;
+// The per-scene statistics from its repetitions.
+void summarize_runs(EnsembleResult& out) {
   std::vector<double> ms, md, mds, tp;
   for (auto& r : out.runs) {
     ms.push_back(r.mu_s);
@@ -140,8 +91,103 @@ EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interru
   out.mu_d_signed = summarize(mds);
   out.t_peak_s = summarize(tp);
   out.contact_fraction = out.runs.empty() ? 0 : out.runs[0].contact_fraction;
-  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+}
+
+}  // namespace
+
+std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, const std::atomic<bool>* interrupt,
+                                          std::function<void(double, double)> progress,
+                                          const std::vector<double>& weights) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const int n_scenes = static_cast<int>(scenes.size());
+  std::vector<EnsembleResult> out(n_scenes);
+  // One job per (scene, repetition), in that order: a thread that finishes its last repetition
+  // of one scene starts on the next scene instead of waiting for the others.
+  struct Job {
+    int scene, rep;
+  };
+  std::vector<Job> jobs;
+  for (int k = 0; k < n_scenes; ++k) {
+    out[k].runs.resize(scenes[k].reps);
+    for (int r = 0; r < scenes[k].reps; ++r) jobs.push_back({k, r});
+  }
+  const int n_jobs = static_cast<int>(jobs.size());
+  std::vector<std::atomic<std::int64_t>> progress_ns(n_jobs);
+  std::vector<char> finished(n_jobs, 0);
+  // Progress: each scene's fraction of simulated time, weighted (by default by reps x duration x N).
+  std::vector<double> job_weight(n_jobs);
+  double weight_total = 0;
+  for (int j = 0; j < n_jobs; ++j) {
+    const Scene& sc = scenes[jobs[j].scene];
+    const double w = weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[jobs[j].scene];
+    job_weight[j] = w / sc.reps / (sc.duration() * 1e9);
+    weight_total += w / sc.reps;
+  }
+
+  std::mutex mu;
+  std::condition_variable cv;
+  bool done = false;
+  std::thread reporter;
+  if (progress) {
+    reporter = std::thread([&] {
+      std::unique_lock lock(mu);
+      while (!cv.wait_for(lock, std::chrono::seconds(1), [&] { return done; })) {
+        double f = 0;
+        for (int j = 0; j < n_jobs; ++j)
+          f += job_weight[j] * static_cast<double>(progress_ns[j].load(std::memory_order_relaxed));
+        progress(f / weight_total, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
+      }
+    });
+  }
+
+  int threads = 1;
+  for (const Scene& sc : scenes) threads = std::max(threads, sc.threads > 0 ? sc.threads : omp_get_max_threads());
+  threads = std::max(1, std::min(threads, n_jobs));
+  // An exception may not leave an OpenMP region (that is std::terminate): record it, let the
+  // other threads skip their remaining repetitions, and rethrow the lowest-index one afterwards.
+  std::vector<std::exception_ptr> errors(n_jobs);
+  std::atomic<bool> failed{false};
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int j = 0; j < n_jobs; ++j) {
+    if ((interrupt && interrupt->load()) || failed.load()) continue;
+    const Job job = jobs[j];
+    try {
+      out[job.scene].runs[job.rep] = run_repetition(scenes[job.scene], job.rep, interrupt, &progress_ns[j]);
+      // A repetition cut short by an interrupt is not a result.
+      finished[j] = !(interrupt && interrupt->load());
+    } catch (...) {
+      errors[j] = std::current_exception();
+      failed.store(true);
+    }
+  }
+  {
+    std::lock_guard lock(mu);
+    done = true;
+  }
+  cv.notify_all();
+  if (reporter.joinable()) reporter.join();
+
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  for (int j = 0; j < n_jobs; ++j) out[jobs[j].scene].finished_reps += finished[j];
+  for (int k = 0; k < n_scenes; ++k) {
+    EnsembleResult& e = out[k];
+    e.interrupted = e.finished_reps < scenes[k].reps;
+    e.threads = std::min(threads, std::max(1, scenes[k].reps));
+    summarize_runs(e);
+    // Pooled with other scenes, a scene has no wall time of its own: its share is its
+    // repetitions' time over the threads (for a single scene, its wall time below).
+    double rep_s = 0;
+    for (const auto& r : e.runs) rep_s += r.wall_s;
+    e.wall_s = rep_s / threads;
+  }
+  if (n_scenes == 1) out[0].wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return out;
+}
+
+EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interrupt,
+                            std::function<void(double, double)> progress) {
+  return std::move(run_ensembles({scene}, interrupt, std::move(progress)).front());
 }
 
 void to_json(nlohmann::json& j, const Statistic& s) {

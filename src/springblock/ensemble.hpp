@@ -53,6 +53,16 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
 EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interrupt = nullptr,
                             std::function<void(double fraction, double elapsed_s)> progress = {});
 
+// Several scenes in one pool of threads: every (scene, repetition) is one job, so no thread
+// idles at the end of a scene while another finishes its last repetition. Each scene's result
+// is what run_ensemble would give it (same seeds, same order); its wall_s is its share, the sum
+// of its repetitions' wall times over the threads. `progress` gets the overall fraction,
+// each scene weighted by `weights` (default: reps x duration x N).
+std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes,
+                                          const std::atomic<bool>* interrupt = nullptr,
+                                          std::function<void(double fraction, double elapsed_s)> progress = {},
+                                          const std::vector<double>& weights = {});
+
 void to_json(nlohmann::json& j, const Statistic& s);
 void to_json(nlohmann::json& j, const RunResult& r);
 
