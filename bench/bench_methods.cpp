@@ -95,15 +95,9 @@ void bm_modal(benchmark::State& st, std::string pattern, double gamma_per_s, dou
 // into sliding, where grooves ring between slipping pawls): short grooves (1,3 and 3,3), the
 // 10-30 block grooves of the tables, 60-block grooves (beyond the default 32) and a hierarchy.
 void bm_modal_groove(benchmark::State& st, std::string pattern, int modal_max_groove) {
-  sb::Scene s;
-  s.geometry = sb::ChainGeometry{360, 0.072};
-  s.pattern = sb::parse_pattern(pattern);
-  s.run.method = sb::Method::Event;
-  s.run.tol = 1e-9;
+  sb::Scene s = scene(pattern, sb::Method::Event, 1e-9);
   s.run.modal_max_groove = modal_max_groove;
   s.run.duration_t0 = 2.0;
-  s.seed = 3;
-  s.reps = 1;
   sb::validate(s);
   time_repetition(st, s);
 }

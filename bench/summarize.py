@@ -76,34 +76,33 @@ def methods_table(path):
     modal_groove_table(rows)
 
 
+def ratio_table(rows, prefix, base, title, extra):
+    """Rows prefix/<scene>/<setting> against prefix/<scene>/<base>, settings in numeric order."""
+    scenes = sorted({name.split("/")[1] for name in rows if name.startswith(prefix + "/")})
+    if scenes:
+        print("\n" + title)
+    for sc in scenes:
+        ref = rows.get(f"{prefix}/{sc}/{base}")
+        names = sorted((k for k in rows if k.startswith(f"{prefix}/{sc}/")),
+                       key=lambda k: int("".join(ch for ch in k.split("/")[-1] if ch.isdigit()) or 0))
+        for name in names:
+            r = rows[name]
+            ratio = f"x{ref['real_time'] / r['real_time']:.2f}" if ref else "?"
+            print(f"{sc:22s} {name.split('/')[-1]:19s} {r['real_time']:7.3f} s   {ratio:7s} {extra(r)}")
+
+
 def modal_table(rows):
     """Short runs propagated by their modes (modal_max_run > 0) against stepping every run."""
-    scenes = sorted({name.split("/")[1] for name in rows if name.startswith("modal/")})
-    if scenes:
-        print("\nModal runs, event tol 1e-9, one repetition, seed 3 (median wall time)")
-    for sc in scenes:
-        base = rows.get(f"modal/{sc}/modal_max_run0")
-        for name in sorted(k for k in rows if k.startswith(f"modal/{sc}/")):
-            r = rows[name]
-            ratio = f"x{base['real_time'] / r['real_time']:.2f}" if base else "?"
-            print(f"{sc:22s} {name.split('/')[-1]:16s} {r['real_time']:7.3f} s   {ratio:7s} switches "
-                  f"{r['switches']:.3g}   mu_s {r['mu_s']:.5f}")
+    ratio_table(rows, "modal", "modal_max_run0", "Modal runs, event tol 1e-9, one repetition, seed 3 (median wall time)",
+                lambda r: f"switches {r['switches']:.3g}   mu_s {r['mu_s']:.5f}")
 
 
 def modal_groove_table(rows):
     """Ringing grooves-only runs propagated by their modes (modal_max_groove) against stepping them."""
-    scenes = sorted({name.split("/")[1] for name in rows if name.startswith("modal_groove/")})
-    if scenes:
-        print("\nModal groove runs, event tol 1e-9, N = 360, 2 t0, one repetition, seed 3 (median wall time)")
-    for sc in scenes:
-        base = rows.get(f"modal_groove/{sc}/modal_max_groove0")
-        names = sorted((k for k in rows if k.startswith(f"modal_groove/{sc}/")),
-                       key=lambda k: int(k.rsplit("groove", 1)[1]))
-        for name in names:
-            r = rows[name]
-            ratio = f"x{base['real_time'] / r['real_time']:.2f}" if base else "?"
-            print(f"{sc:22s} {name.split('/')[-1]:19s} {r['real_time']:7.3f} s   {ratio:7s} steps "
-                  f"{r.get('steps', float('nan')):.3g}   mu_s {r['mu_s']:.5f}   mu_d {r.get('mu_d', float('nan')):.5f}")
+    ratio_table(rows, "modal_groove", "modal_max_groove0",
+                "Modal groove runs, event tol 1e-9, N = 360, 2 t0, one repetition, seed 3 (median wall time)",
+                lambda r: f"steps {r.get('steps', float('nan')):.3g}   mu_s {r['mu_s']:.5f}   "
+                          f"mu_d {r.get('mu_d', float('nan')):.5f}")
 
 
 if __name__ == "__main__":
