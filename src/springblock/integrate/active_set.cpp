@@ -143,7 +143,7 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
       particular(c, s, r.span);
       // A modal groove run that nothing in or beside it switched is kept, and was not brought
       // to s.t (materialise_near): whether its transient is gone comes from its modes' envelope.
-      if (was == kModal && untouched(r.span) && modal_.same_run(r.span.lo, r.span.lo, r.span.hi)) {
+      if (was == kModal && untouched(r.span) && modal_.same_run(r.span.lo, r.span.hi)) {
         r.kind = s.t >= modal_.quiet_after(r.span.lo) ? kSettled : kModal;
         continue;
       }

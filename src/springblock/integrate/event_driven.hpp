@@ -5,18 +5,21 @@
 //    stepped (active_set.hpp: runs holding a sliding block, and grooves still ringing; settled
 //    grooves are affine in t and stuck blocks with no stepped neighbour have closed-form
 //    threshold times, which end the step exactly when they are due; runs of at most
-//    modal_max_run blocks are propagated exactly by their modes and take no step at all, see
-//    modal_runs.hpp; with nothing left to step the loop jumps from event to event). Dormand-Prince 5(4) with
-//    error control (rtol = tol, atol = tol times the natural scales F_n/K_s and
-//    omega_s F_n/K_s). After each
+//    modal_max_run blocks, and grooves-only runs of at most modal_max_groove, are propagated
+//    exactly by their modes and take no step at all, see modal_runs.hpp; with nothing left to
+//    step the loop jumps from event to event). Dormand-Prince 5(4) with error control
+//    (rtol = tol, atol = tol times the natural scales F_n/K_s and omega_s F_n/K_s). A switch
+//    brings only the exact runs it reads to its time (ActiveSet::materialise_near). After each
 //    accepted trial step the continuous extension is searched for switching events (a sliding
 //    block's v dir falls to 0; a stuck block's |F| rises to f_static), sampled at the middle and
 //    end of the step and refined by bisection. The step is then redone to exactly the earliest
 //    event time, every block whose event lies within 1e-12 of the step from it is switched at
 //    that instant (in block order), and integration restarts (the right-hand side has jumped).
 //  * Quiet phase (every contact block stuck): propagated exactly (quiet_phase.hpp); the next
-//    threshold crossing is found without stepping. Samples inside it are exact; once its grooves
-//    have rung down, the observer may take them as one affine stretch (sample_affine).
+//    threshold crossing is found without stepping. Samples inside it are exact, except that an
+//    observer of contact forces only gets groove modes below the settle scales dropped
+//    (QuietPhase::set_sample_scales); once every groove has rung down, the observer may take the
+//    samples as one affine stretch (sample_affine).
 // Samples in the active phase are hit exactly by shortening the step that would pass them.
 // A chain without internal springs (K_int = 0) is solved exactly block by block instead
 // (uncoupled.hpp), unless fast-forward is off.

@@ -55,9 +55,9 @@ class ModalRuns {
   // +inf without damping or with a mode not clearly underdamped, where no bound is taken).
   // Lets the active set settle a kept groove run without evaluating it.
   double quiet_after(int i) const { return runs_[run_of_[i]].quiet_after; }
-  // True if block i is in a modal run spanning exactly [lo, hi).
-  bool same_run(int i, int lo, int hi) const {
-    return run_of_[i] >= 0 && runs_[run_of_[i]].lo == lo && runs_[run_of_[i]].hi == hi;
+  // True if a modal run spans exactly [lo, hi).
+  bool same_run(int lo, int hi) const {
+    return run_of_[lo] >= 0 && runs_[run_of_[lo]].lo == lo && runs_[run_of_[lo]].hi == hi;
   }
 
   bool holds(int i) const { return run_of_[i] >= 0; }
