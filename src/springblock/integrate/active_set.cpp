@@ -119,9 +119,9 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
     // Without internal springs every block is its own system.
     if (K_int_ > 0)
       while (j + 1 < N_ && (!c.contact[j + 1] || s.dir[j + 1] != 0)) ++j;
-    Run r{{i, j + 1}, kStepped, true};
-    for (int k = i; k <= j; ++k) r.grooves = r.grooves && !c.contact[k];
-    runs_.push_back(r);
+    bool grooves = true;
+    for (int k = i; k <= j; ++k) grooves = grooves && !c.contact[k];
+    runs_.push_back(Run{{i, j + 1}, kStepped, grooves});
     i = j + 1;
   }
   auto switched = [&](int i) {
@@ -139,14 +139,16 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
         r.kind = kSettled;
         continue;
       }
-      // Was stepped or modal (ringing, or part of an active run) or never classified: new A, B.
-      particular(c, s, r.span);
       // A modal groove run that nothing in or beside it switched is kept, and was not brought
       // to s.t (materialise_near): whether its transient is gone comes from its modes' envelope.
+      // Its A, B still hold: its stuck ends have not moved since they were computed.
       if (was == kModal && untouched(r.span) && modal_.same_run(r.span.lo, r.span.hi)) {
         r.kind = s.t >= modal_.quiet_after(r.span.lo) ? kSettled : kModal;
         continue;
       }
+      // Was stepped, or modal and touched (ringing, or part of an active run), or never
+      // classified: new A, B.
+      particular(c, s, r.span);
       if (settled_now(s, r.span)) {
         r.kind = kSettled;
         continue;
@@ -274,8 +276,11 @@ void ActiveSet::recheck(const Chain& c, const State& s) {
 void ActiveSet::list_stepped(const State& s) {
   stepped_.clear();
   watched_.clear();
-  for (const Run& r : runs_) {
+  ringing_.clear();
+  for (std::size_t k = 0; k < runs_.size(); ++k) {
+    const Run& r = runs_[k];
     if (r.kind != kStepped) continue;
+    if (r.grooves) ringing_.push_back(static_cast<int>(k));
     stepped_.push_back(r.span);
     // In block order; a stuck block between two stepped runs is listed once.
     if (K_int_ > 0 && r.span.lo > 0 && (watched_.empty() || watched_.back() != r.span.lo - 1))
@@ -356,8 +361,9 @@ void ActiveSet::refresh_next() {
 bool ActiveSet::retire_settled(const Chain& c, const State& s) {
   if (!settle_grooves_) return false;
   bool changed = false;
-  for (Run& r : runs_) {
-    if (r.kind != kStepped || !r.grooves || !settled_now(s, r.span)) continue;
+  for (int k : ringing_) {
+    Run& r = runs_[k];
+    if (!settled_now(s, r.span)) continue;
     r.kind = kSettled;
     for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = kSettled;
     changed = true;

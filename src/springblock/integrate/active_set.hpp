@@ -152,6 +152,7 @@ class ActiveSet {
   std::vector<int> pending_;           // blocks whose modal search is due
   std::vector<int> done_;              // materialise_near: modal runs written (first blocks)
   std::vector<int> cand_;              // rebuild: blocks whose event time may have changed
+  std::vector<int> ringing_;           // runs_ indices of stepped grooves-only runs (list_stepped)
   int P_ = 1;                          // leaves of the event trees (a power of two >= N)
   std::vector<int> tree_, tree_real_;  // tournament trees: node -> block (-1: none)
   std::vector<std::uint8_t> dirty_;    // per block: event time changed since refresh_next
