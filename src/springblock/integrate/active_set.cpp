@@ -171,7 +171,7 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
       if (r.kind != kModal) continue;
       bool keep = kind_prev_[r.span.lo] == kModal;
       for (int i = r.span.lo - 1; keep && i <= r.span.hi; ++i) keep = !switched(i);
-      if (modal_.add(c, s, r.span.lo, r.span.hi, keep))
+      if (modal_.add(c, s, r.span.lo, r.span.hi, keep, r.grooves))
         for (int i = r.span.lo; i < r.span.hi; ++i) fresh_[i] = 1;
     }
     modal_.end();
@@ -393,7 +393,6 @@ void ActiveSet::materialise(double t, double* u, double* v, bool at_sample, bool
 }
 
 void ActiveSet::materialise_near(double t, double* u, double* v, const std::vector<int>& blocks) {
-  int last_modal = -1;  // first block of the modal run written last (runs are visited in order)
   done_.clear();
   for (int b : blocks)
     for (int j = b - 1; j <= b + 1; ++j) {
@@ -410,10 +409,9 @@ void ActiveSet::materialise_near(double t, double* u, double* v, const std::vect
         }
       } else if (kind_[j] == kModal) {
         const int lo = modal_.run_start(j);
-        if (lo == last_modal || std::find(done_.begin(), done_.end(), lo) != done_.end()) continue;
+        if (std::find(done_.begin(), done_.end(), lo) != done_.end()) continue;  // a few runs at most
         modal_.materialise_run(j, t, u, v);
         done_.push_back(lo);
-        last_modal = lo;
       }
     }
 }

@@ -8,6 +8,7 @@
 #include "springblock/integrate/dopri5.hpp"
 #include "springblock/integrate/event_search.hpp"
 #include "springblock/integrate/quiet_phase.hpp"
+#include "springblock/integrate/sample_grid.hpp"
 #include "springblock/integrate/switching.hpp"
 #include "springblock/integrate/uncoupled.hpp"
 
@@ -121,9 +122,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
             affine_ready = true;
           }
           // Samples k dt < next.t, counted exactly as the clock will produce them.
-          long long k_end = static_cast<long long>(std::ceil(next.t / sample_dt));
-          while (k_end > clock.k && static_cast<double>(k_end - 1) * sample_dt >= next.t) --k_end;
-          while (static_cast<double>(k_end) * sample_dt < next.t) ++k_end;
+          const long long k_end = event_detail::first_sample_at_or_after(next.t, sample_dt, clock.k);
           sample.t = clock.next();
           sample.steps = s.steps, sample.rhs_evals = s.rhs_evals, sample.switches = s.switches;
           const long used = obs.sample_affine(c, sample, static_cast<long>(clock.k), sample_dt,

@@ -89,7 +89,7 @@ void ModalRuns::begin(const State&) {
   for (Run& r : runs_) r.live = false;
 }
 
-bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep) {
+bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, bool grooves) {
   const int old = run_of_[lo];
   if (keep && old >= 0 && runs_[old].lo == lo && runs_[old].hi == hi && !runs_[old].live) {
     runs_[old].live = true;
@@ -130,10 +130,7 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep) {
     p0_[lo + k] = pk;
     acc0_[lo + k] = -c.gamma * pk - b.modes[k].omega2 * qk;
   }
-  Run run{lo, hi, &b, s.t, s.t, 0, false, true};
-  bool grooves = true;
-  for (int i = lo; i < hi; ++i) grooves = grooves && !c.contact[i];
-  run.grooves = grooves;
+  Run run{lo, hi, &b, s.t, s.t, 0, false, true, grooves};
   if (grooves) run.quiet_after = s.t + envelope_time(run);
   if (old >= 0 && runs_[old].lo == lo && !runs_[old].live) {
     // Reuse the slot of the old run that started here; its blocks are re-marked by end().

@@ -43,9 +43,9 @@ class ModalRuns {
   // Start a classification at s.t. keep(lo, hi) says whether the run [lo, hi) may keep its
   // coordinates (it was modal with the same span and nothing in or beside it switched).
   void begin(const State& s);
-  // Register run [lo, hi) as modal at s.t. Returns true if it was projected afresh (its events
-  // need searching), false if kept from before.
-  bool add(const Chain& c, const State& s, int lo, int hi, bool keep);
+  // Register run [lo, hi) as modal at s.t (grooves: it holds no contact block). Returns true if
+  // it was projected afresh (its events need searching), false if kept from before.
+  bool add(const Chain& c, const State& s, int lo, int hi, bool keep, bool grooves);
   // Drop the runs not registered since begin().
   void end();
   // Transients below these (in u and v, every row) count as gone: see quiet_after().

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "springblock/integrate/damped_mode.hpp"
+#include "springblock/integrate/sample_grid.hpp"
 #include "springblock/integrate/switching.hpp"
 
 namespace sb::event_detail {
@@ -259,9 +260,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       // Until the next event every friction force is affine in t: the observer may take all
       // the samples before it at once (samples k dt < t_event and <= t_end).
       const double t_stop = std::min(t_event, std::nextafter(t_end, kInf));
-      long long k_end = static_cast<long long>(std::ceil(t_stop / sample_dt));
-      while (k_end > k && static_cast<double>(k_end - 1) * sample_dt >= t_stop) --k_end;
-      while (static_cast<double>(k_end) * sample_dt < t_stop) ++k_end;
+      const long long k_end = first_sample_at_or_after(t_stop, sample_dt, k);
       const long used = obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k),
                                           fa_.data(), fb_.data());
       if (used > 0) {
