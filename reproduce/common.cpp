@@ -285,6 +285,8 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
                    ls.id.c_str(), result.mu_s.mean, result.mu_s.sem, result.mu_d.mean, result.mu_d.sem,
                    result.wall_s);
       records.push_back(scene_record(ls, result, opt.command_line));
+      // Observed on another scene's simulation (same trajectory, other rules or run length).
+      if (result.trajectory_from >= 0) records.back()["trajectory_from"] = scenes[result.trajectory_from].id;
     }
     const Tier& t = tier;
     nlohmann::json doc = {{"target", target},

@@ -7,7 +7,8 @@
 //   {target, tier, method, method_requested, reps, provenance, wall_seconds,
 //    scenes: [{id, label, x: {...}, result: <ensemble_json without runs' provenance>,
 //              series?: {t_s, mu, mu_signed, n_sliding, stride},
-//              stress?: [{t_s, sigma_over_P, f_over_Fn}], contact_mask?: "0101..."}],
+//              stress?: [{t_s, sigma_over_P, f_over_Fn}], contact_mask?: "0101...",
+//              trajectory_from?: id of the scene whose simulation this one was read off}],
 //    ...target-specific blocks (theory, critical, pairs, groups)}
 #include <cstdint>
 #include <functional>

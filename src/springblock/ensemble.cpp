@@ -7,11 +7,14 @@
 #include <cmath>
 #include <condition_variable>
 #include <exception>
+#include <map>
+#include <string>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "springblock/integrate/integrator.hpp"
+#include "springblock/observe/fan_out.hpp"
 
 namespace sb {
 
@@ -33,11 +36,11 @@ Statistic summarize(const std::vector<double>& values) {
   return s;
 }
 
-RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* interrupt,
-                         std::atomic<std::int64_t>* progress_ns) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  const Chain chain = build_chain(scene, rep);
-  State state = State::at_rest(chain);
+namespace {
+
+FrictionObserverConfig observer_config(const Scene& scene, const Chain& chain, int rep,
+                                       const std::atomic<bool>* interrupt,
+                                       std::atomic<std::int64_t>* progress_ns) {
   const auto d = scene.derived();
   FrictionObserverConfig cfg;
   cfg.F_load = chain.F_load;
@@ -50,10 +53,11 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
   if (rep == 0) cfg.stress_times_s = scene.observe.stress_times_s;
   cfg.interrupt = interrupt;
   cfg.progress_ns = progress_ns;
-  FrictionObserver obs(cfg);
-  auto integrator = make_integrator(scene.run);
-  integrator->run(chain, state, scene.duration(), scene.run.sample_dt_s, obs);
+  return cfg;
+}
 
+// The observables of one repetition; the work counters and times are the caller's.
+RunResult observed(const FrictionObserver& obs, const Chain& chain, int rep) {
   RunResult r;
   r.rep = rep;
   r.slipped = obs.slipped();
@@ -64,16 +68,86 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
   r.mu_d = obs.mu_d();
   r.mu_d_signed = obs.mu_d_signed();
   r.window_samples = obs.window_samples();
+  r.contact_fraction = static_cast<double>(chain.n_contact) / chain.N;
+  r.series = obs.series();
+  r.stress = obs.stress();
+  return r;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* interrupt,
+                         std::atomic<std::int64_t>* progress_ns) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const Chain chain = build_chain(scene, rep);
+  State state = State::at_rest(chain);
+  FrictionObserver obs(observer_config(scene, chain, rep, interrupt, progress_ns));
+  auto integrator = make_integrator(scene.run);
+  integrator->run(chain, state, scene.duration(), scene.run.sample_dt_s, obs);
+
+  RunResult r = observed(obs, chain, rep);
   r.steps = state.steps;
   r.rhs_evals = state.rhs_evals;
   r.switches = state.switches;
   r.t_end_s = state.t;
-  r.contact_fraction = static_cast<double>(chain.n_contact) / chain.N;
-  r.series = obs.series();
-  r.stress = obs.stress();
-  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  r.wall_s = seconds_since(wall0);
   return r;
 }
+
+namespace {
+
+// Repetition `rep` of several scenes that share one trajectory (see trajectory_key): simulated
+// once, to the longest duration, with one observer per scene behind a FanOut. scenes[0] is the
+// longest; it is charged the wall time, the others record 0 (their cost is in its run).
+std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& scenes, int rep,
+                                             const std::atomic<bool>* interrupt,
+                                             std::atomic<std::int64_t>* progress_ns) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const Scene& longest = *scenes.front();
+  const Chain chain = build_chain(longest, rep);
+  State state = State::at_rest(chain);
+  std::vector<FrictionObserver> observers;
+  observers.reserve(scenes.size());
+  std::vector<FanOut::View> views;
+  for (std::size_t m = 0; m < scenes.size(); ++m) {
+    observers.emplace_back(observer_config(*scenes[m], chain, rep, interrupt, m == 0 ? progress_ns : nullptr));
+    views.push_back({&observers.back(), scenes[m]->duration()});
+  }
+  auto integrator = make_integrator(longest.run);
+  FanOut fan(std::move(views), longest.run.sample_dt_s,
+             [&](double t, double t_end) { return integrator->samples_within(t, t_end); });
+  integrator->run(chain, state, longest.duration(), longest.run.sample_dt_s, fan);
+
+  std::vector<RunResult> out;
+  for (std::size_t m = 0; m < scenes.size(); ++m) {
+    RunResult r = observed(observers[m], chain, rep);
+    const auto& v = fan.views()[m];
+    r.steps = m == 0 ? state.steps : v.steps;
+    r.rhs_evals = m == 0 ? state.rhs_evals : v.rhs_evals;
+    r.switches = m == 0 ? state.switches : v.switches;
+    r.t_end_s = m == 0 ? state.t : std::min(state.t, v.t_end);
+    out.push_back(std::move(r));
+  }
+  out[0].wall_s = seconds_since(wall0);
+  return out;
+}
+
+// Scenes with equal keys simulate the same trajectory: they differ at most in the extraction
+// rules (how mu_s and mu_d are read off mu(t)), the observables kept for repetition 0, the run
+// length and the thread count. Scenes that stop at their first slip are not shared (their run
+// length is decided by the observer).
+std::string trajectory_key(const Scene& s) {
+  if (s.run.stop_after_mu_s) return {};
+  nlohmann::json j = s;
+  for (const char* k : {"duration_s", "peak_rule", "peak_drop", "mu_d_skip_t0"}) j.erase(k);
+  return j.dump();
+}
+
+}  // namespace
 
 namespace {
 
@@ -101,14 +175,40 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
   const auto wall0 = std::chrono::steady_clock::now();
   const int n_scenes = static_cast<int>(scenes.size());
   std::vector<EnsembleResult> out(n_scenes);
-  // One job per (scene, repetition), in that order: a thread that finishes its last repetition
-  // of one scene starts on the next scene instead of waiting for the others.
+  // Scenes that see the same trajectory form a group, simulated once by its longest member
+  // (the first of the longest on a tie): members[k] lists scene k's group, longest first, when
+  // k leads it, and is empty for the other members.
+  std::vector<std::vector<int>> members(n_scenes);
+  {
+    std::map<std::string, int> lead_of;
+    for (int k = 0; k < n_scenes; ++k) {
+      const std::string key = trajectory_key(scenes[k]);
+      auto it = key.empty() ? lead_of.end() : lead_of.find(key);
+      if (it == lead_of.end()) {
+        members[k] = {k};
+        if (!key.empty()) lead_of[key] = k;
+      } else {
+        members[it->second].push_back(k);
+      }
+    }
+    for (auto& g : members)
+      std::stable_sort(g.begin(), g.end(), [&](int a, int b) { return scenes[a].duration() > scenes[b].duration(); });
+    // The group is filed under its longest member.
+    for (int k = 0; k < n_scenes; ++k)
+      if (!members[k].empty() && members[k].front() != k) std::swap(members[k], members[members[k].front()]);
+    for (int k = 0; k < n_scenes; ++k)
+      for (int m : members[k])
+        if (m != k) out[m].trajectory_from = k;
+  }
+  // One job per (group, repetition), in scene order: a thread that finishes its last
+  // repetition of one scene starts on the next scene instead of waiting for the others.
   struct Job {
     int scene, rep;
   };
   std::vector<Job> jobs;
   for (int k = 0; k < n_scenes; ++k) {
     out[k].runs.resize(scenes[k].reps);
+    if (members[k].empty()) continue;
     for (int r = 0; r < scenes[k].reps; ++r) jobs.push_back({k, r});
   }
   const int n_jobs = static_cast<int>(jobs.size());
@@ -152,7 +252,15 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
     if ((interrupt && interrupt->load()) || failed.load()) continue;
     const Job job = jobs[j];
     try {
-      out[job.scene].runs[job.rep] = run_repetition(scenes[job.scene], job.rep, interrupt, &progress_ns[j]);
+      const auto& group = members[job.scene];
+      if (group.size() == 1) {
+        out[job.scene].runs[job.rep] = run_repetition(scenes[job.scene], job.rep, interrupt, &progress_ns[j]);
+      } else {
+        std::vector<const Scene*> views;
+        for (int m : group) views.push_back(&scenes[m]);
+        auto runs = run_shared_repetition(views, job.rep, interrupt, &progress_ns[j]);
+        for (std::size_t v = 0; v < group.size(); ++v) out[group[v]].runs[job.rep] = std::move(runs[v]);
+      }
       // A repetition cut short by an interrupt is not a result.
       finished[j] = !(interrupt && interrupt->load());
     } catch (...) {
@@ -169,7 +277,8 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
 
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
-  for (int j = 0; j < n_jobs; ++j) out[jobs[j].scene].finished_reps += finished[j];
+  for (int j = 0; j < n_jobs; ++j)
+    for (int m : members[jobs[j].scene]) out[m].finished_reps += finished[j];
   for (int k = 0; k < n_scenes; ++k) {
     EnsembleResult& e = out[k];
     e.interrupted = e.finished_reps < scenes[k].reps;

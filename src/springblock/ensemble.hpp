@@ -42,6 +42,10 @@ struct EnsembleResult {
   int threads = 1;
   bool interrupted = false;
   int finished_reps = 0;
+  // Index (into run_ensembles' scenes) of the scene whose simulation this scene was observed
+  // on, or -1 if it ran its own. Such a scene's repetitions record no wall time (their cost is
+  // the other scene's) and work counters up to their own last sample.
+  int trajectory_from = -1;
 };
 
 // Runs one repetition (used by the ensemble, the tests and the benchmarks).
@@ -58,6 +62,9 @@ EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interru
 // is what run_ensemble would give it (same seeds, same order); its wall_s is its share, the sum
 // of its repetitions' wall times over the threads. `progress` gets the overall fraction,
 // each scene weighted by `weights` (default: reps x duration x N).
+// Scenes that differ only in extraction rules, run length or kept observables (and do not stop
+// at their first slip) share one simulation: the longest runs, the others observe it
+// (observe/fan_out.hpp) and name it in trajectory_from.
 std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes,
                                           const std::atomic<bool>* interrupt = nullptr,
                                           std::function<void(double fraction, double elapsed_s)> progress = {},

@@ -16,6 +16,9 @@ class Integrator {
   virtual ~Integrator() = default;
   virtual void run(const Chain& chain, State& state, double t_end, double sample_dt, Observer& obs) = 0;
   virtual std::string name() const = 0;
+  // Whether a run ending at t_end takes a sample at time t (a sample time of a longer run).
+  // Lets several scenes that differ only in run length share one trajectory (FanOut).
+  virtual bool samples_within(double t, double t_end) const { return t <= t_end; }
 };
 
 std::unique_ptr<Integrator> make_integrator(const RunControl& rc);

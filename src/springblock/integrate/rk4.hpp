@@ -13,6 +13,7 @@
 // block linearly in time; the stepper then jumps straight to the step before the next
 // threshold crossing. This is exact for the scheme (RK4 of a motionless chain is the identity)
 // and is the only shortcut taken.
+#include <cmath>
 #include <vector>
 
 #include "springblock/integrate/integrator.hpp"
@@ -24,6 +25,10 @@ class Rk4 final : public Integrator {
   explicit Rk4(double h) : h_(h) {}
   void run(const Chain& chain, State& state, double t_end, double sample_dt, Observer& obs) override;
   std::string name() const override { return "rk4"; }
+  // Steps are counted in integers: a run to t_end takes llround(t_end / h) of them.
+  bool samples_within(double t, double t_end) const override {
+    return std::llround(t / h_) <= std::llround(t_end / h_);
+  }
 
  private:
   double h_;

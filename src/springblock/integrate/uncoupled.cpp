@@ -258,8 +258,10 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
     if (t_sample > t_end) break;
     if (friction_only) {
       // Until the next event every friction force is affine in t: the observer may take all
-      // the samples before it at once (samples k dt < t_event and <= t_end).
-      const double t_stop = std::min(t_event, std::nextafter(t_end, kInf));
+      // the samples before it at once (samples k dt < t_event and < t_end). A sample exactly at
+      // t_end comes through sample(), as in the coupled integrator, so a run's samples are cut
+      // into stretches the same way whatever its end (FanOut relies on it).
+      const double t_stop = std::min(t_event, t_end);
       const long long k_end = first_sample_at_or_after(t_stop, sample_dt, k);
       const long used = obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k),
                                           fa_.data(), fb_.data());

@@ -1,0 +1,78 @@
+#include "springblock/observe/fan_out.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sb {
+
+FanOut::FanOut(std::vector<View> views, double sample_dt, Within within)
+    : views_(std::move(views)), sample_dt_(sample_dt), within_(std::move(within)) {
+  if (views_.empty()) throw std::logic_error("FanOut: no views");
+  for (const auto& v : views_)
+    if (!v.obs) throw std::logic_error("FanOut: a view without an observer");
+}
+
+// Samples sit at k sample_dt (RK4's at n h with n a multiple of the stride, which round to the
+// same k), so the index is recovered by rounding.
+long long FanOut::index_of(double t) const { return std::llround(t / sample_dt_); }
+
+void FanOut::record(View& v, const State& s) {
+  v.steps = s.steps;
+  v.rhs_evals = s.rhs_evals;
+  v.switches = s.switches;
+}
+
+void FanOut::sample(const Chain& c, const State& s) {
+  const long long k = index_of(s.t);
+  for (auto& v : views_) {
+    if (v.obs->wants_stop() || !within_(s.t, v.t_end) || k < v.next_k) continue;
+    v.obs->sample(c, s);
+    v.next_k = k + 1;
+    record(v, s);
+  }
+}
+
+long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, long n, const double* a,
+                           const double* b) {
+  if (n <= 0) return 0;
+  const long long k_stop = static_cast<long long>(k0) + n;  // one past the stretch
+  auto t_of = [dt](long long k) { return static_cast<double>(k) * dt; };
+  long long reached_min = k_stop;
+  for (auto& v : views_) {
+    if (v.obs->wants_stop()) continue;
+    // A run of its own offers a view the samples strictly before its end in affine stretches
+    // (a sample exactly at the end comes through sample(), see event_driven.cpp, uncoupled.cpp).
+    long long hi = std::min<long long>(k_stop, static_cast<long long>(std::floor(v.t_end / dt)) + 2);
+    while (hi > k0 && !(t_of(hi - 1) < v.t_end)) --hi;
+    const long long lo = std::max<long long>(k0, v.next_k);
+    long long reached = lo;
+    if (lo < hi) {
+      const long used = v.obs->sample_affine(c, s, static_cast<long>(lo), dt, static_cast<long>(hi - lo), a, b);
+      if (used > 0) {
+        v.next_k = lo + used;
+        record(v, s);
+      }
+      reached = lo + used;
+    }
+    // Past its affine samples in this stretch, a view needs nothing more from it unless its
+    // next sample (one exactly at its end) is inside the stretch: that one it takes from sample().
+    if (reached >= hi && !(reached < k_stop && within_(t_of(reached), v.t_end))) reached = k_stop;
+    reached_min = std::min(reached_min, reached);
+  }
+  return static_cast<long>(reached_min - k0);
+}
+
+bool FanOut::wants_stop() const {
+  return std::all_of(views_.begin(), views_.end(), [](const View& v) { return v.obs->wants_stop(); });
+}
+
+bool FanOut::reads_groove_interiors() const {
+  return std::any_of(views_.begin(), views_.end(), [](const View& v) { return v.obs->reads_groove_interiors(); });
+}
+
+bool FanOut::reads_only_friction() const {
+  return std::all_of(views_.begin(), views_.end(), [](const View& v) { return v.obs->reads_only_friction(); });
+}
+
+}  // namespace sb
