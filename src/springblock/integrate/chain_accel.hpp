@@ -5,12 +5,13 @@
 // scene without internal springs or damping does not pay for them. The neighbours lo-1 and hi
 // are read from u (they are stuck blocks while the span is stepped). The chain's free ends are
 // peeled off so the interior loop has no branch and vectorises.
+#include "springblock/integrate/kernel_clones.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
 
 template <bool Coupled, bool Damped>
-inline void chain_accel(const Chain& c, int lo, int hi, const double* __restrict u, const double* __restrict v,
+SB_INLINE void chain_accel(const Chain& c, int lo, int hi, const double* __restrict u, const double* __restrict v,
                         double t, const double* __restrict mobile, const double* __restrict f_kin,
                         double* __restrict a) {
   const int N = c.N;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "springblock/integrate/kernel_clones.hpp"
+
 namespace sb::event_detail {
 
 Dopri5::Dopri5(int N) : N_(N), store_(14 * static_cast<std::size_t>(N)), ut_(N), u1_(N) {
@@ -34,21 +36,29 @@ double Dopri5::dense(const double* y0, const double* y1, int b, int i, double th
 
 namespace {
 // Largest weighted error of the u and v components over [lo, hi); restrict-qualified and
-// branch-free (stuck blocks weighted by mobile = 0) so it vectorises.
-double span_error(int lo, int hi, double h, const double* __restrict k0, const double* __restrict k2,
-                  const double* __restrict k3, const double* __restrict k4, const double* __restrict k5,
-                  const double* __restrict k6, const double* __restrict y0, const double* __restrict y1,
-                  const double* __restrict mobile, double atol, double rtol) {
+// branch-free (stuck blocks weighted by mobile = 0). GCC keeps a floating-point max reduction
+// scalar unless told its order does not matter (omp simd); a max is exact, so it does not.
+SB_KERNEL_CLONES double span_error(int lo, int hi, double h, const double* __restrict k0,
+                                   const double* __restrict k2, const double* __restrict k3,
+                                   const double* __restrict k4, const double* __restrict k5,
+                                   const double* __restrict k6, const double* __restrict y0,
+                                   const double* __restrict y1, const double* __restrict mobile, double atol,
+                                   double rtol) {
   using T = Dp5Tableau;
-  double worst = 0;
+  // `seen` sums the ratios only to carry a NaN (a vector max may drop one): a NaN error must
+  // reject the step.
+  double worst = 0, seen = 0;
+#pragma omp simd reduction(max : worst) reduction(+ : seen)
   for (int i = lo; i < hi; ++i) {
     const double e = h * (T::e1 * k0[i] + T::e3 * k2[i] + T::e4 * k3[i] + T::e5 * k4[i] + T::e6 * k5[i] +
                           T::e7 * k6[i]);
-    const double sc = atol + rtol * std::max(std::fabs(y0[i]), std::fabs(y1[i]));
+    const double a0 = std::fabs(y0[i]), a1 = std::fabs(y1[i]);
+    const double sc = atol + rtol * (a0 < a1 ? a1 : a0);
     const double r = mobile[i] * std::fabs(e) / sc;
     worst = worst > r ? worst : r;
+    seen += r;
   }
-  return worst;
+  return std::isnan(seen) ? seen : worst;
 }
 }  // namespace
 

@@ -12,6 +12,7 @@
 
 #include "springblock/integrate/active_set.hpp"
 #include "springblock/integrate/chain_accel.hpp"
+#include "springblock/integrate/kernel_clones.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
@@ -87,7 +88,7 @@ class Dopri5 {
 };
 
 template <bool Coupled, bool Damped>
-void Dopri5::first_stage(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v,
+SB_KERNEL_CLONES void Dopri5::first_stage(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v,
                          double t, const double* mobile, const double* f_kin) {
   for (const Span& sp : spans) {
     for (int i = sp.lo; i < sp.hi; ++i) k_[0][i] = v[i];
@@ -98,25 +99,25 @@ void Dopri5::first_stage(const Chain& c, const std::vector<Span>& spans, const d
 // Stage combinations out = y + h (w1 k1 + ...), one function per number of terms with
 // restrict-qualified parameters so GCC vectorises them (through lambdas over an array of stage
 // pointers it did not: the loops compiled to scalar code).
-inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
                  const double* __restrict k1) {
   for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i]);
 }
-inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
                  const double* __restrict k1, double w2, const double* __restrict k2) {
   for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i]);
 }
-inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
                  const double* __restrict k1, double w2, const double* __restrict k2, double w3,
                  const double* __restrict k3) {
   for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i] + w3 * k3[i]);
 }
-inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
                  const double* __restrict k1, double w2, const double* __restrict k2, double w3,
                  const double* __restrict k3, double w4, const double* __restrict k4) {
   for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i] + w3 * k3[i] + w4 * k4[i]);
 }
-inline void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
+SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
                  const double* __restrict k1, double w2, const double* __restrict k2, double w3,
                  const double* __restrict k3, double w4, const double* __restrict k4, double w5,
                  const double* __restrict k5) {
@@ -125,7 +126,7 @@ inline void comb(int lo, int hi, double* __restrict out, const double* __restric
 }
 
 template <bool Coupled, bool Damped>
-double Dopri5::attempt(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v,
+SB_KERNEL_CLONES double Dopri5::attempt(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v,
                        double t, double h, const double* mobile, const double* f_kin, double atol_u,
                        double atol_v, double rtol) {
   using T = Dp5Tableau;
@@ -133,7 +134,7 @@ double Dopri5::attempt(const Chain& c, const std::vector<Span>& spans, const dou
   double* u1 = u1_.data();
   double* const* K = k_;  // K[s] velocity stage s (= the trial v), K[7+s] acceleration stage s
   // Stage s from the trial positions ut and the trial velocities already in K[s].
-  auto stage = [&](int s, double cs, const double* pos) {
+  auto stage = [&](int s, double cs, const double* pos) __attribute__((always_inline)) {
     for (const Span& sp : spans)
       chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, pos, K[s], t + cs * h, mobile, f_kin, K[7 + s]);
   };

@@ -5,18 +5,10 @@
 #include <cstdint>
 #include <limits>
 
-// The step and the switch screen are compiled twice on x86-64, for the baseline (SSE2) and for
-// AVX2, and the loader picks the clone the CPU runs (GCC target_clones): 4 doubles per vector
-// instead of 2 measured x1.5-1.7 on the RK4 runs of accuracy_cost. Their helpers are forced
-// inline so that they are compiled into each clone; called out of line, the SSE2 helper after
-// AVX2 code ran at half speed. Without FMA contraction (src/CMakeLists.txt) both clones round
-// alike, so results are bit-identical whichever runs.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define SB_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define SB_KERNEL_CLONES
-#endif
+#include "springblock/integrate/kernel_clones.hpp"
 
+// The step and the switch screen have AVX2 clones (kernel_clones.hpp): x1.5-1.9 measured on
+// the RK4 runs of accuracy_cost, bit-identical results.
 namespace sb {
 namespace {
 
@@ -36,7 +28,7 @@ struct Workspace {
 // Acceleration of every block, specialised at compile time on the smooth effects present so a
 // scene without internal springs or damping does not pay for them in the inner loop.
 template <bool Coupled, bool Damped>
-[[gnu::always_inline]] inline void acceleration(const Chain& c, const double* __restrict u, const double* __restrict v, double t,
+SB_INLINE void acceleration(const Chain& c, const double* __restrict u, const double* __restrict v, double t,
                   const double* __restrict mobile, const double* __restrict f_kin, double* __restrict a) {
   const int N = c.N;
   const double Ks = c.K_s, Ki = c.K_int, mg = c.m * c.gamma, inv_m = 1.0 / c.m;
@@ -64,7 +56,7 @@ template <bool Coupled, bool Damped>
 // One intermediate RK4 stage: accumulate the stage slopes (weight 2) and form the next stage
 // input y + c h k. A separate function with restrict-qualified parameters lets GCC vectorise
 // it (the same loops inlined with restrict locals did not: measured 15-20% on the step).
-[[gnu::always_inline]] inline void rk4_stage(int N, const double* __restrict u, const double* __restrict v,
+SB_INLINE void rk4_stage(int N, const double* __restrict u, const double* __restrict v,
                       const double* __restrict a, double ch, double* __restrict us,
                       double* __restrict vs, double* __restrict su, double* __restrict sv) {
   for (int i = 0; i < N; ++i) {
