@@ -57,12 +57,14 @@ def main():
     tmp = tpath + ".tmp"
     json.dump(timings, open(tmp, "w"), indent=1)
     os.replace(tmp, tpath)
-    rc = subprocess.call(["cmake", "--build", build, "--target", "reproduce-summary"])
+    # The summary, figure scripts and report are independent per figure: run them in parallel.
+    jobs = ["-j", str(os.cpu_count() or 2)]
+    rc = subprocess.call(["cmake", "--build", build, "--target", "reproduce-summary"] + jobs)
     defined = subprocess.run(["cmake", "--build", build, "--target", "help"], capture_output=True,
                              text=True).stdout
     for t in extra:
         if f"... {t}\n" in defined or f" {t}:" in defined:
-            rc = rc or subprocess.call(["cmake", "--build", build, "--target", t])
+            rc = rc or subprocess.call(["cmake", "--build", build, "--target", t] + jobs)
     print(f"\nreproduce-all: finished in {fmt(time.time() - t0)} (tier {tier}); "
           f"summary in {os.path.join(rdir, 'summary.tsv')}")
     return rc
