@@ -8,9 +8,9 @@
 #include <condition_variable>
 #include <exception>
 #include <map>
-#include <string>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <thread>
 
 #include "springblock/integrate/integrator.hpp"
@@ -146,10 +146,6 @@ std::string trajectory_key(const Scene& s) {
   for (const char* k : {"duration_s", "peak_rule", "peak_drop", "mu_d_skip_t0"}) j.erase(k);
   return j.dump();
 }
-
-}  // namespace
-
-namespace {
 
 // The per-scene statistics from its repetitions.
 void summarize_runs(EnsembleResult& out) {

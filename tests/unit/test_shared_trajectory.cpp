@@ -4,10 +4,12 @@
 // event method with grooves and quiet phases, the per-block K_int = 0 solver, RK4).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "springblock/ensemble.hpp"
+#include "springblock/integrate/integrator.hpp"
 #include "springblock/scene_fields.hpp"
 
 using namespace sb;
@@ -92,8 +94,8 @@ TEST(SharedTrajectory, UncoupledSolverMatchesOwnRuns) {
 
 TEST(SharedTrajectory, Rk4MatchesOwnRuns) {
   Scene b = base("periodic:2,2", "rk4");
-  set_scene_field(b, "N", "24");
-  set_scene_field(b, "length", "0.48cm");
+  set_scene_field(b, "N", "12");
+  set_scene_field(b, "length", "0.24cm");
   set_scene_field(b, "dt", "4e-7s");
   set_scene_field(b, "duration", "1.6t0");
   b.reps = 1;
@@ -110,4 +112,21 @@ TEST(SharedTrajectory, DifferentPhysicsOrStopRuleIsNotShared) {
   set_scene_field(c, "stop_after_mu_s", "true");
   const auto pooled = run_ensembles({a, b, c, c});
   for (const auto& e : pooled) EXPECT_EQ(e.trajectory_from, -1);
+}
+
+// Which samples a shorter view receives follows the integrator's own end rule. RK4 runs
+// llround(t_end / h) steps, so a run whose t_end lies a rounding error below a step time still
+// takes that step and samples there; the event method samples at k dt <= t_end.
+TEST(SharedTrajectory, SampleWindowFollowsEachIntegratorsEndRule) {
+  const double h = 4e-7, t_step = 2600000 * h;  // a step (and sample) time, 1.04 s
+  const double t_end = std::nextafter(t_step, 0.0);
+  RunControl rk4;
+  rk4.method = Method::RK4;
+  rk4.dt_s = h;
+  EXPECT_TRUE(make_integrator(rk4)->samples_within(t_step, t_end));
+  EXPECT_FALSE(make_integrator(rk4)->samples_within(t_step + 25 * h, t_end));
+  RunControl event;
+  event.method = Method::Event;
+  EXPECT_FALSE(make_integrator(event)->samples_within(t_step, t_end));
+  EXPECT_TRUE(make_integrator(event)->samples_within(t_end, t_end));
 }
