@@ -161,10 +161,11 @@ int apply_switches(const Chain& c, State& s, Workspace& w) {
   return n_sliding;
 }
 
-// apply_switches behind the screen; `n_sliding` is the count after the previous call.
-int apply_switches_screened(const Chain& c, State& s, Workspace& w, int n_sliding) {
-  const bool maybe = switch_screen(c.N, c.K_s, c.K_int, c.v_slider * s.t, s.u.data(), s.v.data(),
-                                   w.slide_dir.data(), w.f_screen.data(), w.stop_bias.data());
+// apply_switches behind the screen (unless `screen` is off, the tests' reference); `n_sliding`
+// is the count after the previous call.
+int apply_switches_screened(const Chain& c, State& s, Workspace& w, int n_sliding, bool screen) {
+  const bool maybe = !screen || switch_screen(c.N, c.K_s, c.K_int, c.v_slider * s.t, s.u.data(), s.v.data(),
+                                              w.slide_dir.data(), w.f_screen.data(), w.stop_bias.data());
   return maybe ? apply_switches(c, s, w) : n_sliding;
 }
 
@@ -183,7 +184,7 @@ std::int64_t quiet_steps(const Chain& c, const State& s, std::int64_t n, double 
 }
 
 template <bool Coupled, bool Damped>
-void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, double h) {
+void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, double h, bool screen) {
   Workspace w(c.N);
   for (int i = 0; i < c.N; ++i) {
     w.mobile[i] = (!c.contact[i] || s.dir[i] != 0) ? 1.0 : 0.0;
@@ -218,7 +219,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     s.t = n * h;
     ++s.steps;
     s.rhs_evals += 4;
-    n_sliding = apply_switches_screened(c, s, w, n_sliding);
+    n_sliding = apply_switches_screened(c, s, w, n_sliding, screen);
     if (n % stride == 0) obs.sample(c, s);
   }
 }
@@ -227,10 +228,10 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
 
 void Rk4::run(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs) {
   const auto e = c.effects();
-  if (e.coupled && e.damped) run_loop<true, true>(c, s, t_end, sample_dt, obs, h_);
-  else if (e.coupled) run_loop<true, false>(c, s, t_end, sample_dt, obs, h_);
-  else if (e.damped) run_loop<false, true>(c, s, t_end, sample_dt, obs, h_);
-  else run_loop<false, false>(c, s, t_end, sample_dt, obs, h_);
+  if (e.coupled && e.damped) run_loop<true, true>(c, s, t_end, sample_dt, obs, h_, screen_);
+  else if (e.coupled) run_loop<true, false>(c, s, t_end, sample_dt, obs, h_, screen_);
+  else if (e.damped) run_loop<false, true>(c, s, t_end, sample_dt, obs, h_, screen_);
+  else run_loop<false, false>(c, s, t_end, sample_dt, obs, h_, screen_);
 }
 
 }  // namespace sb
