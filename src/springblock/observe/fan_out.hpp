@@ -10,10 +10,11 @@
 // Stretches of affine samples (Observer::sample_affine) are the delicate part: an observer sums
 // a stretch in closed form, and how a stretch is cut into prefixes changes the rounding of those
 // sums. FanOut offers each view exactly the stretches a run of its own would have offered it
-// (from the view's next unseen sample to the end of the stretch or of the view's run), and
-// reports to the integrator the shortest prefix any view took, so views that took more skip the
-// samples they already have. A view's result is then the same, to the last bit, as its own run
-// gives, except in the measure-zero case of a sample falling exactly on a shorter view's end.
+// (from the view's next unseen sample to the end of the stretch, or to the view's end: a run's
+// affine stretches stop short of a sample exactly at its end, which it takes through sample()),
+// and reports to the integrator the shortest prefix any view took, so views that took more skip
+// the samples they already have. A view's result is then the same, to the last bit, as its own
+// run gives (tests/unit/test_shared_trajectory.cpp, ends on sample times included).
 #include <cstdint>
 #include <functional>
 #include <vector>
