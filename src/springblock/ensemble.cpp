@@ -176,25 +176,24 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
   // k leads it, and is empty for the other members.
   std::vector<std::vector<int>> members(n_scenes);
   {
-    std::map<std::string, int> lead_of;
+    std::map<std::string, std::size_t> group_of;
+    std::vector<std::vector<int>> groups;
     for (int k = 0; k < n_scenes; ++k) {
       const std::string key = trajectory_key(scenes[k]);
-      auto it = key.empty() ? lead_of.end() : lead_of.find(key);
-      if (it == lead_of.end()) {
-        members[k] = {k};
-        if (!key.empty()) lead_of[key] = k;
-      } else {
-        members[it->second].push_back(k);
+      const auto it = key.empty() ? group_of.end() : group_of.find(key);
+      if (it != group_of.end()) {
+        groups[it->second].push_back(k);
+        continue;
       }
+      if (!key.empty()) group_of[key] = groups.size();
+      groups.push_back({k});
     }
-    for (auto& g : members)
+    for (auto& g : groups) {
       std::stable_sort(g.begin(), g.end(), [&](int a, int b) { return scenes[a].duration() > scenes[b].duration(); });
-    // The group is filed under its longest member.
-    for (int k = 0; k < n_scenes; ++k)
-      if (!members[k].empty() && members[k].front() != k) std::swap(members[k], members[members[k].front()]);
-    for (int k = 0; k < n_scenes; ++k)
-      for (int m : members[k])
-        if (m != k) out[m].trajectory_from = k;
+      for (int m : g)
+        if (m != g.front()) out[m].trajectory_from = g.front();
+      members[g.front()] = std::move(g);
+    }
   }
   // One job per (group, repetition), in scene order: a thread that finishes its last
   // repetition of one scene starts on the next scene instead of waiting for the others.
