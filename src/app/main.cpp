@@ -69,13 +69,28 @@ void print_progress(double fraction, double elapsed) {
   std::fflush(stderr);
 }
 
+// A statistic over no repetitions prints why instead of a NaN.
+void print_statistic(const char* name, const sb::Statistic& st, const std::string& not_measured) {
+  if (st.n == 0)
+    std::printf("%s: not measured (%s)\n", name, not_measured.c_str());
+  else
+    std::printf("%s = %.4f +- %.4f (sd %.4f, n=%d)\n", name, st.mean, st.sem, st.std, st.n);
+}
+
 int cmd_run(const FieldOptions& fields, CLI::App* app, const std::string& scene_file, bool json,
             const std::string& out_path, const std::string& series_path, bool progress,
             const std::string& command_line) {
   sb::Scene scene = scene_file.empty() ? sb::Scene{} : load_scene_file(scene_file);
   fields.apply(scene, app);
-  if (!series_path.empty()) scene.observe.series = true;
+  if (app->count("--series") > 0) scene.observe.series = true;
   sb::validate(scene);
+  // Output paths are checked before the run, not after minutes of simulation.
+  if (app->count("--out") > 0) sb::check_writable(out_path, "out");
+  if (app->count("--series") > 0) {
+    if (series_path == out_path)
+      throw sb::InputError("series", "'" + series_path + "' is also the --out file; give another file");
+    sb::check_writable(series_path, "series");
+  }
 
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -89,14 +104,39 @@ int cmd_run(const FieldOptions& fields, CLI::App* app, const std::string& scene_
                  result.finished_reps, scene.reps);
     return 130;
   }
+  const char* loading_end = scene.rules.peak_rule == sb::ExtractionRules::PeakRule::AllSlipped
+                                ? "not every contact block slid"
+                                : "mu(t) never fell peak_drop below its running maximum";
+  const double T = scene.duration(), t0 = scene.t0_s();
+  // Nothing measured: an error, not a result of NaNs. Exit 3 (known only after the run; bad input
+  // is 2) and write nothing.
+  if (result.mu_s.n == 0) {
+    std::fprintf(stderr,
+                 "springblock: nothing measured: no repetition (of %d) ended its loading phase (%s) "
+                 "before the end of the run (duration = %g s = %g t0), so mu_s and mu_d are undefined. "
+                 "Lengthen --duration%s. No output file was written.\n",
+                 scene.reps, loading_end, T, T / t0,
+                 scene.rules.peak_rule == sb::ExtractionRules::PeakRule::Drop ? " or lower --peak-drop" : "");
+    return 3;
+  }
+  if (!scene.run.stop_after_mu_s && result.mu_d.n == 0) {
+    std::fprintf(stderr,
+                 "springblock: nothing measured: no repetition had a sample in its mu_d window (from the "
+                 "first slip + mu_d_skip = %g t0 to the end of the run, duration = %g t0), so mu_d is "
+                 "undefined. Lower --mu-d-skip or lengthen --duration. No output file was written.\n",
+                 scene.rules.mu_d_skip_t0, T / t0);
+    return 3;
+  }
   if (result.mu_s.n < scene.reps)
     std::fprintf(stderr,
                  "springblock: warning: %d of %d repetitions never ended their loading phase (%s) before "
                  "the end of the run; their mu_s and mu_d are undefined (null). Lengthen --duration.\n",
-                 scene.reps - result.mu_s.n, scene.reps,
-                 scene.rules.peak_rule == sb::ExtractionRules::PeakRule::AllSlipped
-                     ? "not every contact block slid"
-                     : "mu(t) never fell peak_drop below its running maximum");
+                 scene.reps - result.mu_s.n, scene.reps, loading_end);
+  if (!scene.run.stop_after_mu_s && result.mu_d.n < result.mu_s.n)
+    std::fprintf(stderr,
+                 "springblock: warning: %d of %d repetitions that slipped had no sample in their mu_d window; "
+                 "their mu_d is undefined (null). Lower --mu-d-skip or lengthen --duration.\n",
+                 result.mu_s.n - result.mu_d.n, result.mu_s.n);
   auto j = sb::ensemble_json(scene, result, command_line);
   if (!out_path.empty()) sb::write_file_atomic(out_path, j.dump(2) + "\n");
   if (!series_path.empty()) sb::write_file_atomic(series_path, sb::series_tsv(scene, result, command_line));
@@ -106,8 +146,8 @@ int cmd_run(const FieldOptions& fields, CLI::App* app, const std::string& scene_
     std::printf("scene: N=%d L_x=%g m pattern=%s contact fraction=%.6g method=%s reps=%d seed=%llu\n",
                 scene.geometry.N, scene.geometry.L_x_m, scene.pattern.text().c_str(), result.contact_fraction,
                 sb::method_name(scene.run.method).c_str(), scene.reps, (unsigned long long)scene.seed);
-    std::printf("mu_s = %.4f +- %.4f (sd %.4f, n=%d)\n", result.mu_s.mean, result.mu_s.sem, result.mu_s.std, result.mu_s.n);
-    std::printf("mu_d = %.4f +- %.4f (sd %.4f, n=%d)\n", result.mu_d.mean, result.mu_d.sem, result.mu_d.std, result.mu_d.n);
+    print_statistic("mu_s", result.mu_s, sb::not_measured(scene, result, "mu_s"));
+    print_statistic("mu_d", result.mu_d, sb::not_measured(scene, result, "mu_d"));
     std::printf("wall time %.2f s on %d threads\n", result.wall_s, result.threads);
   }
   return 0;
@@ -165,6 +205,10 @@ int main(int argc, char** argv) {
   run->add_option("--out", out_path, "write the full JSON results to this file (atomically)");
   run->add_option("--series", series_path, "write mu(t) and the sliding count of repetition 0 as TSV");
   run->add_flag("--progress", progress, "show progress and ETA on stderr even when it is not a terminal");
+  run->footer(
+      "Exit codes: 0 results printed and written; 2 bad input, named with its allowed range (nothing is "
+      "run or written); 3 nothing measured (no repetition slipped, or no sample in the mu_d window; "
+      "nothing written); 130 interrupted (nothing written); 1 any other error.");
   int pattern_N = 120;
   std::string pattern_spec = "smooth";
   auto* pattern_cmd = app.add_subcommand("pattern", "print a surface's contact mask (1 = pawl, 0 = groove) and S/S_tot");

@@ -1,15 +1,20 @@
 #include "springblock/io.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <thread>
+
+#include "springblock/units.hpp"
 
 #ifndef SPRINGBLOCK_COMMIT
 #define SPRINGBLOCK_COMMIT "unknown"
@@ -42,6 +47,31 @@ void write_file_atomic(const std::string& path, const std::string& content) {
   }
 }
 
+void check_writable(const std::string& path, const std::string& field) {
+  if (path.empty()) throw InputError(field, "empty path; give a file name");
+  struct stat st{};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InputError(field, "'" + path + "' is a directory; give a file name");
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+  if (fd < 0) {
+    const auto slash = path.rfind('/');
+    const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    throw InputError(field, "cannot write '" + path + "' (directory '" + dir + "': " + std::strerror(errno) +
+                                "); give a file in an existing, writable directory");
+  }
+  ::close(fd);
+  ::unlink(tmp.c_str());
+}
+
+std::string not_measured(const Scene& scene, const EnsembleResult& r, const std::string& quantity) {
+  const Statistic& st = quantity == "mu_s" ? r.mu_s : r.mu_d;
+  if (st.n > 0) return {};
+  if (quantity != "mu_s" && scene.run.stop_after_mu_s) return "stop_after_mu_s";
+  if (r.mu_s.n == 0) return "no repetition ended its loading phase before the end of the run (duration)";
+  return "no repetition had a sample in its mu_d window (mu_d_skip, duration)";
+}
+
 nlohmann::json provenance(const std::string& command_line) {
   std::time_t now = std::time(nullptr);
   char stamp[32];
@@ -60,9 +90,15 @@ nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const 
   std::int64_t steps = 0, rhs = 0;
   int slipped = 0;
   for (const auto& run : r.runs) steps += run.steps, rhs += run.rhs_evals, slipped += run.slipped;
-  return {{"mu_s", r.mu_s},
-          {"mu_d", r.mu_d},
-          {"mu_d_signed", r.mu_d_signed},
+  // A statistic over no repetitions has null mean, std and sem, and says why.
+  auto stat = [&](const Statistic& st, const std::string& quantity) {
+    nlohmann::json j = st;
+    if (const auto why = not_measured(scene, r, quantity); !why.empty()) j["not_measured"] = why;
+    return j;
+  };
+  return {{"mu_s", stat(r.mu_s, "mu_s")},
+          {"mu_d", stat(r.mu_d, "mu_d")},
+          {"mu_d_signed", stat(r.mu_d_signed, "mu_d")},
           {"t_peak_s", r.t_peak_s},
           {"reps", scene.reps},
           {"reps_slipped", slipped},

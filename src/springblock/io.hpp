@@ -14,6 +14,16 @@ namespace sb {
 // Throws std::runtime_error naming the path on failure; no partial file is left behind.
 void write_file_atomic(const std::string& path, const std::string& content);
 
+// Refuse an output path before anything is simulated: creates and removes the temporary file
+// write_file_atomic would use, so a missing or unwritable directory, or a directory given as the
+// file, fails now rather than after the run. Throws InputError(field, ...) naming the path.
+void check_writable(const std::string& path, const std::string& field);
+
+// Why a statistic of `result` has no value, or "" when it has one: JSON puts it beside the nulls
+// (`not_measured`) and the text output prints it in place of a number. `quantity` is "mu_s" or
+// "mu_d" (mu_d_signed shares mu_d's reason).
+std::string not_measured(const Scene& scene, const EnsembleResult& result, const std::string& quantity);
+
 // Provenance: program version, commit, command line, UTC time, host threads.
 nlohmann::json provenance(const std::string& command_line);
 

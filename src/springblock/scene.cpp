@@ -101,6 +101,14 @@ void validate(const Scene& s) {
   require(finite(f.mu_d_mean) && f.mu_d_mean >= 0 && f.mu_d_mean <= 100, "mu_d", f.mu_d_mean,
           "[0, 100] for the mean");
   require(finite(f.mu_d_sd) && f.mu_d_sd >= 0 && f.mu_d_sd <= 100, "mu_d", f.mu_d_sd, "[0, 100] for the SD");
+  // A single draw with mu_d > mu_s is the pair policy's business. A mean above mu_s's makes it
+  // the rule, and either policy then discards one of the two inputs on most blocks: clip sets
+  // mu_d = mu_s, keep raises the static threshold to mu_d (build_chain). Both leave a chain that
+  // creeps at its thresholds with mu_d = mu_s, not the scene that was asked for, so it is refused.
+  require(f.mu_d_mean <= f.mu_s_mean, "mu_d", f.mu_d_mean,
+          "[0, mu_s mean = " + str(f.mu_s_mean) +
+              "] for the mean (kinetic friction above static friction has no stick-slip; "
+              "mu_d = mu_s gives blocks that creep at their threshold)");
   require(finite(s.k_int_scale) && s.k_int_scale >= 0 && s.k_int_scale <= 1e8, "k_int_scale",
           s.k_int_scale, "[0, 1e8]");
   require(s.reps >= 1, "reps", s.reps, "[1, 1000000]");
@@ -149,6 +157,22 @@ void validate(const Scene& s) {
           s.rules.peak_drop, "(0, 1]");
   require(finite(s.rules.mu_d_skip_t0) && s.rules.mu_d_skip_t0 >= 0 && s.rules.mu_d_skip_t0 <= 1e3,
           "mu_d_skip", s.rules.mu_d_skip_t0, "[0, 1000]");
+  // Runs that cannot measure anything are refused here rather than averaged over no samples.
+  // The loading phase ends at a sample after t = 0, and mu_d averages the samples after that
+  // one, from (first slip + mu_d_skip) on: a run needs at least two sampling intervals, and a
+  // window that opens before the end of the run. Whether the first slip itself comes before the
+  // end is known only after the run (springblock run exits 3 if it never does).
+  const double T = s.duration(), t0 = s.t0_s();
+  if (r.stop_after_mu_s) {  // no mu_d window: one interval suffices
+    require(r.sample_dt_s <= T, "sample_dt", r.sample_dt_s, "(0, duration = " + str(T) + " s]");
+  } else {
+    require(2 * r.sample_dt_s <= T, "sample_dt", r.sample_dt_s,
+            "(0, duration / 2 = " + str(T / 2) + " s] (a sample at the first slip and one after it)");
+    require(s.rules.mu_d_skip_t0 * t0 < T - r.sample_dt_s, "mu_d_skip", s.rules.mu_d_skip_t0,
+            "[0, (duration - sample_dt) / t0 = " + str((T - r.sample_dt_s) / t0) +
+                ") in t0: the mu_d window must open before the end of the run (lower --mu-d-skip or "
+                "lengthen --duration)");
+  }
   for (double t : s.observe.stress_times_s)
     require(finite(t) && t >= 0 && t <= s.duration(), "stress_times", t,
             "[0, duration = " + str(s.duration()) + " s]");

@@ -49,14 +49,14 @@ const std::vector<Entry>& entries() {
        }},
       {{"length", "total length L_x (default 4cm; m, cm, mm, um)", "7.2cm"},
        [](Scene& s, auto& k, auto& v) { s.geometry.L_x_m = parse_quantity(v, Dimension::Length, k); }},
-      {{"pattern", "surface: smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION",
+      {{"pattern", "surface: smooth (default) | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION",
         "periodic:2,1"},
        [](Scene& s, auto&, auto& v) { s.pattern = parse_pattern(v); }},
       {{"mu_s", "micro static coefficient MEAN,SD (default 1.0,0.1)", "1.0,0.1"},
        [](Scene& s, auto& k, auto& v) {
          std::tie(s.friction.mu_s_mean, s.friction.mu_s_sd) = mean_sd(k, v);
        }},
-      {{"mu_d", "micro dynamic coefficient MEAN,SD (default 0.5,0.01)", "0.5,0.01"},
+      {{"mu_d", "micro dynamic coefficient MEAN,SD (default 0.5,0.01); the mean must not exceed mu_s's", "0.5,0.01"},
        [](Scene& s, auto& k, auto& v) {
          std::tie(s.friction.mu_d_mean, s.friction.mu_d_sd) = mean_sd(k, v);
        }},
@@ -96,15 +96,15 @@ const std::vector<Entry>& entries() {
          if (n < 0) throw InputError(k, "seed = " + v + " must be >= 0");
          s.seed = static_cast<std::uint64_t>(n);
        }},
-      {{"threads", "OpenMP threads over repetitions (default: all cores)", "2"},
+      {{"threads", "OpenMP threads over repetitions (default 0 = all cores: OMP_NUM_THREADS if set, else every hardware thread)", "2"},
        [](Scene& s, auto& k, auto& v) {
          auto n = integer(k, v);
          if (n < 0 || n > 1024) throw InputError(k, "threads = " + v + " is outside [0, 1024]");
          s.threads = static_cast<int>(n);
        }},
-      {{"method", "integrator: rk4 (the paper's fixed step) or event (exact switching, adaptive)", "rk4"},
+      {{"method", "integrator: event (default; exact switching, adaptive) or rk4 (the paper's fixed step --dt)", "rk4"},
        [](Scene& s, auto&, auto& v) { s.run.method = parse_method(v); }},
-      {{"dt", "RK4 step h (default 1e-4ms)", "1e-4ms"},
+      {{"dt", "RK4 step h (default 1e-4ms; s, ms, us)", "1e-4ms"},
        [](Scene& s, auto& k, auto& v) { s.run.dt_s = parse_quantity(v, Dimension::Time, k); }},
       {{"tol", "event method relative tolerance (default 1e-9)", "1e-9"},
        [](Scene& s, auto& k, auto& v) { s.run.tol = number(k, v); }},
@@ -120,7 +120,7 @@ const std::vector<Entry>& entries() {
          if (n < 0 || n > 64) throw InputError(k, "modal_max_groove = " + v + " is outside [0, 64]");
          s.run.modal_max_groove = static_cast<int>(n);
        }},
-      {{"duration", "simulated time: a time (e.g. 1s) or a multiple of t0 (e.g. 4t0, the default)", "4t0"},
+      {{"duration", "simulated time: a time (e.g. 1s) or a multiple of the loading time t0 (e.g. 4t0, the default)", "4t0"},
        [](Scene& s, auto& k, auto& v) {
          if (v.size() > 2 && v.substr(v.size() - 2) == "t0") {
            s.run.duration_t0 = number(k, v.substr(0, v.size() - 2));
@@ -130,7 +130,7 @@ const std::vector<Entry>& entries() {
            if (!(s.run.duration_s > 0)) throw InputError(k, "duration = " + v + " must be > 0");
          }
        }},
-      {{"sample_dt", "spacing of mu(t) samples (default 1e-2ms)", "1e-2ms"},
+      {{"sample_dt", "spacing of mu(t) samples (default 1e-2ms; at most duration/2)", "1e-2ms"},
        [](Scene& s, auto& k, auto& v) { s.run.sample_dt_s = parse_quantity(v, Dimension::Time, k); }},
       {{"peak_rule", "end of the loading phase for mu_s: all_slipped (every contact block has slid once, default) or drop", "all_slipped"},
        [](Scene& s, auto& k, auto& v) {
@@ -140,15 +140,15 @@ const std::vector<Entry>& entries() {
        }},
       {{"peak_drop", "with --peak-rule drop: mu falling this far below its running max ends loading (default 0.05)", "0.05"},
        [](Scene& s, auto& k, auto& v) { s.rules.peak_drop = number(k, v); }},
-      {{"mu_d_skip", "mu_d window starts this many t0 after the first slip (default 0.25)", "0.25"},
+      {{"mu_d_skip", "mu_d window starts this many t0 after the first slip, before the end of the run (default 0.25)", "0.25"},
        [](Scene& s, auto& k, auto& v) { s.rules.mu_d_skip_t0 = number(k, v); }},
-      {{"stop_after_mu_s", "stop each repetition at the first macroscopic slip (true/false)", "false"},
+      {{"stop_after_mu_s", "stop each repetition at the first macroscopic slip; mu_d is then not measured (true/false, default false)", "false"},
        [](Scene& s, auto& k, auto& v) {
          if (v == "true" || v == "1") s.run.stop_after_mu_s = true;
          else if (v == "false" || v == "0") s.run.stop_after_mu_s = false;
          else throw InputError(k, "'" + v + "' is not true or false");
        }},
-      {{"stress_times", "comma-separated times for per-block stress snapshots (repetition 0)", "0.2s,0.3s"},
+      {{"stress_times", "comma-separated times for per-block stress snapshots of repetition 0 (default none)", "0.2s,0.3s"},
        [](Scene& s, auto& k, auto& v) {
          s.observe.stress_times_s.clear();
          std::size_t start = 0;

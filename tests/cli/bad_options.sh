@@ -34,8 +34,8 @@ expect_error "--mu-s 0,0.1" mu_s "value 0" "(0, 100]"
 expect_error "--mu-d 0.5,-1" mu_d "value -1" "[0, 100]"
 expect_error "--k-int-scale -1" k_int_scale "-1" "[0, 1e8]"
 expect_error "--dt 10s" dt "10" "(0, 1 s]"
-expect_error "--dt 1e-5s" dt "1e-05" "largest stable step"
-expect_error "--damping 1e9/s" dt "1e+09" "largest stable step"
+expect_error "--method rk4 --dt 1e-5s" dt "1e-05" "largest stable step"
+expect_error "--method rk4 --damping 1e9/s" dt "1e+09" "largest stable step"
 expect_error "--tol 1" tol "value 1" "[1e-14, 1e-2]"
 expect_error "--sample-dt 0s" sample_dt "value 0" "(0, 10 s]"
 expect_error "--peak-drop 2" peak_drop "value 2" "(0, 1]"
@@ -51,7 +51,7 @@ expect_error "--duration -1t0" duration "-1" "(0, 1e4] t0"
 expect_error "--duration 2e6s" duration "2e+06" "(0, 1e6 s]"
 expect_error "--mu-d-skip -1" mu_d_skip "-1" "[0, 1000]"
 expect_error "--stop-after-mu-s maybe" stop_after_mu_s "'maybe'" "true or false"
-expect_error "--duration 0.01t0 --stress-times 9s" stress_times "9" "[0, duration"
+expect_error "--duration 0.5t0 --stress-times 9s" stress_times "9" "[0, duration"
 # Not a number / not finite.
 expect_error "--velocity nan" velocity "'nan'" "not a finite number"
 expect_error "--density NaN" density "'NaN'" "not a finite number"
@@ -73,6 +73,20 @@ expect_error "--N 10 --pattern periodic:20,5" pattern "size 20" "N=10"
 expect_error "--N 10 --pattern hierarchical:4,16" pattern "size 16" "N=10"
 expect_error "--pattern random:0.999" pattern "random:0.999" "no block in contact"
 expect_error "--pattern random:1.5" pattern "'1.5'" "[0,1)"
+# Scenes that could only give a NaN or an average over no samples (defaults: duration 4 t0 =
+# 1.6 s, t0 = 0.4 s, sample_dt 1e-5 s, mu_d_skip 0.25 t0).
+# Kinetic friction above static: refused whatever the method or pair policy.
+expect_error "--mu-s 1.0,0.1 --mu-d 1.5,0.01" mu_d "value 1.5" "[0, mu_s mean = 1]"
+expect_error "--mu-s 1.0,0.1 --mu-d 1.5,0.01 --method rk4" mu_d "value 1.5" "[0, mu_s mean = 1]"
+expect_error "--mu-s 1.0,0.1 --mu-d 1.5,0.01 --pair-policy keep" mu_d "value 1.5" "[0, mu_s mean = 1]"
+# A sampling step too long for a slip sample and one after it (one, without a mu_d window).
+expect_error "--sample-dt 1s" sample_dt "value 1" "(0, duration / 2 = 0.8 s]"
+expect_error "--sample-dt 2s --stop-after-mu-s true" sample_dt "value 2" "(0, duration = 1.6 s]"
+# A mu_d window that opens after the end of the run, or exactly at it (zero length).
+expect_error "--mu-d-skip 10" mu_d_skip "value 10" "[0, (duration - sample_dt) / t0 = 3.99998)"
+expect_error "--mu-d-skip 4" mu_d_skip "value 4" "[0, (duration - sample_dt) / t0 = 3.99998)"
+expect_error "--duration 0.1t0" mu_d_skip "value 0.25" "lengthen --duration"
+expect_error "--duration 0.1s --mu-d-skip 0.3" mu_d_skip "value 0.3" "[0, (duration - sample_dt) / t0 = 0.249975)"
 
 # The pattern subcommand refuses an empty surface too.
 "$sb" pattern --N 10 --pattern random:0.99 >/dev/null 2>&1

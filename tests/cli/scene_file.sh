@@ -23,11 +23,12 @@ check '{"N": 50, "length": "4 parsecs"}' length "unknown unit"
 check '{"N": 0}' N "outside [1, 1000000]"
 check '{"N": 50, "pattern": "periodic:60,1"}' pattern "exceeds the number of blocks"
 check '{"N": 50, "damping": [1, 2]}' damping "string, number or boolean"
+check '{"N": 50, "mu_s": "1.0,0.1", "mu_d": "1.5,0.01"}' mu_d "[0, mu_s mean = 1]"
 check '[1, 2, 3]' scene "one JSON object"
 check '{"N": 50,' scene "not valid JSON"
 
 # A good scene file runs.
-printf '{"N": 20, "reps": 1, "duration": "0.5t0", "pattern": "periodic:2,1"}' >"$dir/ok.json"
+printf '{"N": 20, "reps": 1, "duration": "3t0", "pattern": "periodic:2,1"}' >"$dir/ok.json"
 "$sb" run --scene "$dir/ok.json" --json >/dev/null 2>&1 || { echo "FAIL a valid scene file was refused"; fail=1; }
 
 [ $fail -eq 0 ] && echo "scene files validated"

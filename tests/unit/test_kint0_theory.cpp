@@ -23,6 +23,7 @@ TEST_P(KInt0, FollowsGaussianAveragedTheory) {
   s.k_int_scale = 0;
   s.material.gamma_per_s = 0;
   s.friction = {1.0, 0.1, mu_d, 0.01};
+  s.run.method = Method::RK4;  // the paper's method against the paper's theory
   s.run.duration_t0 = 24;
   s.rules.mu_d_skip_t0 = 2;
   s.reps = 4;
