@@ -1,30 +1,37 @@
 #!/usr/bin/python3
 """Literate reproduction report: build/paper/report.md and a self-contained report.html.
 
-For every figure and table, in the paper's order: the narrative written at the top of its
-reproduction driver (reproduce/<target>.cpp), our figure, and published against reproduced
-numbers with the deviation in sigmas and the check tool's verdict. Then the summary counts,
-the open modelling choices (paper/choices.md), the sensitivity and accuracy/cost studies and
-the known deviations. Every number is read from a file at build time; nothing is typed in.
+Summary first: the verdict counts exactly as the checker's summary.json states them, the rule
+behind them, what each tier of repetitions can resolve and how the z-scores spread. Then every
+figure and table in the paper's order: the narrative written at the top of its reproduction
+driver (reproduce/<target>.cpp), our figure, the published numbers it shows with their verdicts
+and the numbers behind each, and every claim it carries with its comparison lines. Then the open
+modelling choices (paper/choices.md), the sensitivity and accuracy/cost studies and the known
+deviations. Every number is read from a file at build time; nothing is typed in.
 
-The document is built once as a list of blocks and rendered twice (Markdown and HTML), so
-the two outputs cannot drift apart and no Markdown converter is needed.
+All verdicts come from summary.json through tools/summary_schema.py; a missing or malformed
+summary stops the report with a message naming the problem (exit 2), never a placeholder.
+
+The document is built once as a list of blocks and rendered twice (Markdown and HTML), so the two
+outputs cannot drift apart and no Markdown converter is needed.
 """
 import argparse
 import base64
 import csv
 import html
 import json
-import math
 import os
 import re
 import sys
 import tempfile
 from pathlib import Path
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO / "tables"))
+sys.path.insert(0, str(REPO / "tools"))
 import render_tables  # noqa: E402
+import summary_schema as schema  # noqa: E402
 
 # Paper order: the model schematic, section II figures, section III figures, then the tables.
 ORDER = ["schematics", "fig1", "fig_s1", "fig_s2", "fig2", "fig_p1", "fig3", "fig4", "fig5",
@@ -45,34 +52,37 @@ TITLES = {
     "tab_pat1": "Table tpat1 (appendix)",
     "tab_pat2": "Table tpat2 (appendix)",
 }
+# The paper's label of a claim (figure_claims.tsv) -> the report section that shows that figure.
+# Labels of text sections (sec_*, an_calc) have no figure; those claims appear with their targets.
+FIGURE_SECTION = {"fig1": "fig1", "fig_s1": "fig_s1", "fig_s2": "fig_s2", "fig2": "fig2", "fig_p1": "fig_p1",
+                  "fig3a": "fig3", "fig3b": "fig3", "fig5": "fig5", "fig_p2": "fig_p2", "fig_p3": "fig_p3",
+                  "tpat0": "tab_pat0", "tpat1": "tab_pat1", "tpat2": "tab_pat2"}
+COUNT_HEAD_ROWS, COUNT_HEAD_CLAIMS = ["published numbers", "count"], ["claims", "count"]
+ROW_HEAD = ["row", "pattern"] + render_tables.DETAIL_HEAD
 
 
 # ---------------------------------------------------------------- inputs
 
 def load_json(path):
-    try:
-        return json.loads(Path(path).read_text())
-    except (OSError, ValueError):
+    """A target's document, or None when it was not produced."""
+    path = Path(path)
+    if not path.is_file():
         return None
+    return json.loads(path.read_text())
 
 
 def read_tsv(path):
-    try:
-        with open(path) as f:
-            lines = [ln for ln in f if ln.strip() and not ln.startswith("#")]
-    except OSError:
-        return None
+    with open(path) as f:
+        lines = [ln for ln in f if ln.strip() and not ln.startswith("#")]
     return list(csv.DictReader(lines, delimiter="\t"))
 
 
 def narrative(target):
     """The `/* NARRATIVE ... */` block of reproduce/<target>.cpp split into its parts."""
     src = REPO / "reproduce" / f"{target}.cpp"
-    try:
-        text = src.read_text()
-    except OSError:
+    if not src.is_file():
         return None
-    m = re.search(r"/\*\s*NARRATIVE\s*\n(.*?)\*/", text, re.S)
+    m = re.search(r"/\*\s*NARRATIVE\s*\n(.*?)\*/", src.read_text(), re.S)
     if not m:
         return None
     parts, key = {}, None
@@ -84,22 +94,6 @@ def narrative(target):
         elif key:
             parts[key] += " " + line.strip()
     return parts
-
-
-# One tolerant number parser for the report and the tables it embeds.
-fnum = render_tables.fnum
-
-
-def f3(x, d=3):
-    return f"{x:.{d}f}" if math.isfinite(x) else "–"
-
-
-def dig(obj, dotted, default=None):
-    for k in dotted.split("."):
-        if not isinstance(obj, dict) or k not in obj:
-            return default
-        obj = obj[k]
-    return obj
 
 
 # ---------------------------------------------------------------- document model
@@ -185,12 +179,11 @@ def nested_list_html(items):
     return "".join(out)
 
 
-VERDICT_CLASS = {"agree": "ok", "disagree": "bad", "known_deviation": "known", "not produced": "bad"}
-
-
 def cell_html(c):
+    """A table cell; verdict cells are coloured (their first word is the verdict)."""
     c = str(c)
-    cls = VERDICT_CLASS.get(c)
+    word = c.split()[0] if c.split() else ""
+    cls = render_tables.VERDICT_CLASS[word] if word in render_tables.VERDICT_CLASS else ""
     return f'<td class="{cls}">{html.escape(c)}</td>' if cls else f"<td>{html.escape(c)}</td>"
 
 
@@ -202,6 +195,7 @@ table.cmp{border-collapse:collapse;font-size:.8rem;margin:1rem 0;display:block;o
 table.cmp th,table.cmp td{border:1px solid #ccc;padding:.15rem .4rem;text-align:right;white-space:nowrap}
 table.cmp th{background:#f0f4f8}table.cmp caption{font-weight:bold;text-align:left;padding:.3rem 0}
 td.ok{background:#e6f4ea}td.bad{background:#fde7e7}td.known{background:#fff4d6}td.flag{background:#fff4d6}
+td.unres{background:#ececec}
 figure{margin:1rem 0}figure img{max-width:100%;border:1px solid #eee}figcaption{font-size:.8rem;color:#555}
 .narrative{background:#f7f7f7;border-left:4px solid #0072B2;padding:.2rem 1rem;font-size:.9rem}
 .missing{color:#B00000;font-weight:bold}p.note{font-size:.8rem;color:#555}code{background:#f3f3f3;padding:0 .2rem}
@@ -245,171 +239,264 @@ def choices_blocks(path):
     return [b for b in blocks if not (b[0] == "h" and b[1] == 2)]  # its own title is ours
 
 
-# ---------------------------------------------------------------- sections
+# ---------------------------------------------------------------- summary section
+
+def pct(x):
+    return f"{100 * x:g} %"
+
+
+def rule_paragraph(s):
+    th = s["thresholds"]
+    d = th["delta"]
+    return (f"**Rule.** Each published value p ± e is set against our mean m ± s (standard error of n "
+            f"repetitions): d = m − p, σ = √(e² + s²), z = d/σ. It **disagrees** when |z| > k, with k the "
+            f"two-sided Student-t quantile (Welch–Satterthwaite degrees of freedom, the paper's side taken as "
+            f"{th['n_pub_reps_assumed']} repetitions) at a {pct(th['alpha_familywise'])} family-wise false-alarm "
+            f"rate over all {th['n_published']} numbers (Šidák); a significant difference is reported however "
+            f"small. It **agrees** only when two one-sided tests at {pct(th['alpha_equivalence'])} each exclude a "
+            f"deviation of Δ = {d['mu_s']} in mu_s or {d['mu_d']} in mu_d: |d| + t₀.₉₅·σ ≤ Δ (Schuirmann's TOST). "
+            f"A small |z| on its own would only be the absence of evidence: with few repetitions it cannot tell a "
+            f"faithful reproduction from one that is off by Δ. Everything else is **not resolved** at this tier. "
+            f"Claims are judged line by line the same way: a line fails on a significant contradiction (one-sided, "
+            f"{pct(th['alpha_familywise'])} family-wise over the claim's comparisons), is ok when a one-sided 95 % "
+            f"bound shows what the claim needs (orderings up to the margin Δ, stated limits), and is unresolved "
+            f"otherwise; a claim holds when every line is ok. Deviations listed in tables/known_deviations.tsv are "
+            f"expected at the tiers named there; one that no longer deviates is stale and fails its test. Δ and "
+            f"the rule were fixed before looking at which numbers land where.")
+
+
+def counts_table(head, counts):
+    return ("table", head, [[v, n] for v, n in counts.items()] + [["total", sum(counts.values())]])
+
+
+def resolution_blocks(s):
+    rows = []
+    for tier, r in s["resolution"].items():
+        cells = [tier, str(r["reps"])]
+        for coef in ("mu_s", "mu_d"):
+            c = r[coef]
+            cells += [f"{c['certifiable']} of {c['rows']}", f"{c['median_equivalence']:.4f}",
+                      f"{c['median_detection']:.4f}"]
+        rows.append(cells)
+    head = ["tier", "repetitions"] + [f"{coef}: {what}" for coef in ("mu_s", "mu_d")
+                                      for what in ("certifiable", "median t95·σ", "median k·σ")]
+    text = ("What each tier can resolve, estimated from this run's per-repetition spread and each tier's "
+            "repetition count (tier_reps of the target documents): *certifiable* counts the published values that "
+            "could at best be shown equal (t95·σ < Δ, i.e. even if our mean hit the published value exactly); "
+            "*median k·σ* is the median smallest difference the detection rule flags. The published errors alone "
+            "keep some values from ever being certified. The smoke tier also runs shorter, so its spread may "
+            "differ from this estimate.")
+    return [("h", 3, "What each tier can resolve"), ("p", text), ("table", head, rows)]
+
+
+def z_blocks(s, figs):
+    z = s["z_distribution"]
+    cuts = schema.Z_CUTS
+    return [("h", 3, "How the z-scores spread"),
+            ("img", str(figs / "zscores.png") if (figs / "zscores.png").is_file() else None,
+             "zscores: figures/zscores.py"),
+            ("table", ["fraction of z within ±", *cuts],
+             [[f"ours ({z['n']} numbers)", *(f"{z['within'][c]:.3f}" for c in cuts)],
+              ["standard normal", *(f"{z['normal'][c]:.3f}" for c in cuts)]]),
+            ("p", f"Sample standard deviation of z: {z['sd']:.2f} (1 for a standard normal; mu_s alone "
+                  f"{z['sd_by_coef']['mu_s']:.2f}, mu_d alone {z['sd_by_coef']['mu_d']:.2f}); mean {z['mean']:+.2f}. "
+                  "If the published errors and ours were the whole story, z would follow the standard normal.")]
+
+
+def summary_blocks(s, docs, figs):
+    c = s["counts"]
+    B = [("h", 2, "Summary"),
+         ("p", f"Tier **{s['tier']}** ({s['tier_reps'][s['tier']]} repetitions per scene). Every published number "
+               f"and every figure claim gets exactly one verdict; the counts below are those of summary.json."),
+         counts_table(COUNT_HEAD_ROWS, c["rows"]), counts_table(COUNT_HEAD_CLAIMS, c["claims"]),
+         ("p", rule_paragraph(s))]
+    if s["stale"]:
+        B.append(("p", "**Stale known deviations** (listed in tables/known_deviations.tsv for this tier but no longer "
+                       "deviating; their tests fail until the entry is removed): " + ", ".join(s["stale"]) + "."))
+    else:
+        B.append(("p", "No known deviation is stale: every entry listed for this tier still deviates."))
+    B.append(("table", ["claim", "figure", "verdict"],
+              [[cl["claim_id"], cl["figure"], claim_verdict_text(cl)] for cl in s["claims"]]))
+    B += resolution_blocks(s)
+    B += z_blocks(s, figs)
+    produced = [d for d in docs.values() if d is not None]
+    total_wall = sum(d["wall_seconds"] for d in produced)
+    commits = sorted({str(d["provenance"]["commit"]) for d in produced})
+    B.append(("p", f"Targets produced: {len(produced)} of {len(docs)}. Total wall time of the reproduction "
+                   f"(sum over the target files): {total_wall:.0f} s. Simulator commit(s): {', '.join(commits)}."))
+    B.append(("table", ["target", "status", "tier", "method", "scenes", "wall s"],
+              [status_row(t, docs[t]) for t in docs]))
+    return B
+
 
 def status_row(target, doc):
     if doc is None:
         return [target, "not produced", "–", "–", "–", "–"]
-    return [target, "produced", doc.get("tier", "?"), doc.get("method", "?"), len(doc.get("scenes") or []),
-            f3(fnum(doc.get("wall_seconds")), 1)]
+    return [target, "produced", doc["tier"], doc["method"], len(doc["scenes"]), f"{doc['wall_seconds']:.1f}"]
 
 
-def published_rows_for(doc, summary, pub):
-    """Published against reproduced for the scenes of a figure target that have printed
-    numbers (matched by row_id, else by pattern and N)."""
-    rows = []
-    for s in (doc or {}).get("scenes") or []:
-        rid = dig(s, "x.row_id")
-        row = pub.get(rid) if rid else None
-        if row is None:
-            pat = dig(s, "result.scene.pattern") or dig(s, "x.pattern")
-            n = dig(s, "result.scene.geometry.N") or dig(s, "x.N")
-            row = pub.get((pat, n))
-        if row is None:
-            continue
-        for c in ("mu_s", "mu_d"):
-            m, sem = fnum(dig(s, f"result.{c}.mean")), fnum(dig(s, f"result.{c}.sem"))
-            p, e = fnum(row[c]), fnum(row[c + "_err"])
-            chk = (summary or {}).get((row["row_id"], c))
-            if chk:
-                z, v = fnum(chk.get("z")), chk.get("verdict", "?")
-            else:
-                den = math.hypot(e, sem)
-                z = (m - p) / den if den > 0 and math.isfinite(m) else math.nan
-                v = "unchecked"
-            rows.append([row["row_id"], row["pattern"], c, f"{f3(p)} ± {f3(e)}", f"{f3(m)} ± {f3(sem)}",
-                         f"{z:+.1f}" if math.isfinite(z) else "–", v])
-    return rows
+# ---------------------------------------------------------------- rows and claims of a section
 
+def row_index(pub):
+    """(pattern, N, L_x in m) -> row_id: how a figure's scene is recognised as a table row."""
+    return {(r["pattern"], int(r["N"]), round(float(r["L_x_cm"]) / 100, 9)): rid for rid, r in pub.items()}
+
+
+def rows_shown_by(doc, index):
+    """Row ids of the published rows a figure target simulates (or borrows), in scene order."""
+    out = []
+    for s in doc["scenes"]:
+        sc = s["result"]["scene"]
+        key = (sc["pattern"], sc["geometry"]["N"], round(sc["geometry"]["L_x_m"], 9))
+        if key in index and index[key] not in out:
+            out.append(index[key])
+    return out
+
+
+def row_table(row_ids, s, pub):
+    recs = {(r["row_id"], r["coef"]): r for r in s["rows"]}
+    return ("table", ROW_HEAD, [[rid, pub[rid]["pattern"]] + render_tables.detail_cells(recs[(rid, coef)])
+                                for rid in row_ids for coef in ("mu_s", "mu_d")])
+
+
+def claim_verdict_text(cl):
+    return cl["verdict"] + (" STALE" if cl["stale"] else "")
+
+
+def claim_items(cl):
+    """A claim as nested list items: verdict and statement, then one item per comparison line."""
+    tier = cl["tier"] if cl["tier"] is not None else "no results"
+    known = " [known deviation]" if cl["known_deviation"] else ""
+    items = [(0, f"**{cl['claim_id']}** ({cl['figure']}; needs {', '.join(cl['targets'])}; tier {tier}): "
+                 f"**{claim_verdict_text(cl)}**{known}. {cl['statement']}")]
+    items += [(1, f"{ln['status']}: {ln['text']}") for ln in cl["lines"]]
+    if cl["verdict"] == "missing":
+        items.append((1, f"missing: {cl['note']}"))
+    return items
+
+
+def claim_sections(s, narratives):
+    """claim_id -> the report sections that show it: each target it needs, the section of the
+    figure it is about, and each section whose narrative says it checks it."""
+    out = {}
+    for cl in s["claims"]:
+        secs = [t for t in cl["targets"] if t in TITLES]
+        if cl["figure"] in FIGURE_SECTION:
+            secs.append(FIGURE_SECTION[cl["figure"]])
+        secs += [t for t, nar in narratives.items()
+                 if nar and "Checked" in nar and cl["claim_id"] in re.findall(r"C\d\d", nar["Checked"])]
+        if not secs:
+            raise ValueError(f"claim {cl['claim_id']} has no section in the report")
+        out[cl["claim_id"]] = set(secs)
+    return out
+
+
+def claims_block(s, sections, target):
+    items = [it for cl in s["claims"] if target in sections[cl["claim_id"]] for it in claim_items(cl)]
+    return [("p", "Claims:"), ("list", items)] if items else []
+
+
+# ---------------------------------------------------------------- studies
 
 def sensitivity_rows(doc):
     rows = []
-    scenes = (doc or {}).get("scenes") or []
-    base = {dig(s, "x.surface"): s for s in scenes if dig(s, "x.choice") == "baseline"}
+    scenes = doc["scenes"]
+    base = {s["x"]["surface"]: s for s in scenes if s["x"]["choice"] == "baseline"}
     for s in scenes:
-        b = base.get(dig(s, "x.surface"))
-        if b is None or s is b:
+        b = base[s["x"]["surface"]]
+        if s is b:
             continue
-        d = [fnum(dig(s, f"result.{c}.mean")) - fnum(dig(b, f"result.{c}.mean")) for c in ("mu_s", "mu_d")]
-        rows.append([dig(s, "x.surface", "?"), dig(s, "x.choice", "?"), f"{dig(s, 'x.key', '')}={dig(s, 'x.value', '')}",
-                     f"{d[0]:+.4f}", f"{d[1]:+.4f}", f3(fnum(dig(b, "result.mu_s.sem")), 4),
-                     f3(fnum(dig(b, "result.mu_d.sem")), 4)])
+        d = [s["result"][c]["mean"] - b["result"][c]["mean"] for c in ("mu_s", "mu_d")]
+        rows.append([s["x"]["surface"], s["x"]["choice"], f"{s['x']['key']}={s['x']['value']}",
+                     f"{d[0]:+.4f}", f"{d[1]:+.4f}", f"{b['result']['mu_s']['sem']:.4f}",
+                     f"{b['result']['mu_d']['sem']:.4f}"])
     return rows
 
 
-def build(args):
-    data, figs = Path(args.data), Path(args.figures)
-    summary_rows = read_tsv(data / "summary.tsv")
-    summary = {(r["row_id"], r["coef"]): r for r in summary_rows} if summary_rows else None
-    summary_json = load_json(data / "summary.json")
-    tables = render_tables.render(data)
+def accuracy_rows(doc):
+    """The driver's work_precision table: one row per setting and study, errors against the
+    converged event reference (first peak: per-seed max; mu_d: ensemble mean over its sem)."""
+    rows = []
+    for r in doc["work_precision"]:
+        if r["study"] == "first_peak":
+            err = f"mu_s {r['error_mu_s']:.2g}, t_slip {r['error_t_slip_s']:.2g} s"
+        else:
+            err = f"mu_d {r['error_mu_d']:.2g} = {r['error_mu_d_over_sem']:.2f} sem"
+        rows.append([r["study"], r["setting"], err, f"{r['wall_seconds']:.2f}", f"{r['rhs_evals_total']:.3g}"])
+    for f in doc["failed"]:
+        rows.append([f["study"], f["setting"], "failed: " + str(f["reason"]), "-", "-"])
+    return rows
+
+
+def figure_block(figs, name):
+    png = figs / f"{name}.png"
+    return ("img", str(png) if png.is_file() else None, f"{name}: figures/{name}.py")
+
+
+# ---------------------------------------------------------------- the document
+
+def build(data, figs, s):
     pub = {}
-    for t in ("tab_pat0", "tab_pat1", "tab_pat2"):
-        for r in read_tsv(REPO / "tables" / f"published_{t}.tsv") or []:
-            pub.setdefault(r["row_id"], r)
-            pub.setdefault((r["pattern"], int(r["N"])), r)
+    for t in render_tables.TABLES:
+        for r in read_tsv(REPO / "tables" / f"published_{t}.tsv"):
+            pub[r["row_id"]] = r
+    index = row_index(pub)
     docs = {t: load_json(data / t / f"{t}.json") for t in ORDER + ["sensitivity", "accuracy_cost"]
             if t != "schematics"}
+    narratives = {t: narrative(t) for t in ORDER}
+    sections = claim_sections(s, narratives)
+    tables = render_tables.render(data, s)
 
     B = [("h", 1, "Static and dynamic friction of hierarchical surfaces: reproduction report"),
          ("p", "Reproduction of Costagliola, Bosia and Pugno, Phys. Rev. E 94, 063003 (2016), with the "
                "springblock simulator. Each section below gives the claim the paper makes, the scene we simulate, "
-               "our figure, and the published numbers next to ours. Deviations are given in sigmas, "
-               "z = (ours − published)/√(err² + sem²).")]
-    # Summary first: a reader wants the verdict before the detail.
-    B.append(("h", 2, "Summary"))
-    if summary_rows is None:
-        B.append(("p", f"summary.tsv not produced ({data / 'summary.tsv'} missing): the verdicts below are "
-                       "recomputed z values marked 'unchecked'."))
-    else:
-        n = {}
-        for r in summary_rows:
-            n[r.get("verdict", "?")] = n.get(r.get("verdict", "?"), 0) + 1
-        B.append(("table", ["verdict", "published numbers"], [[k, v] for k, v in sorted(n.items())] +
-                  [["total", len(summary_rows)]]))
-    produced = [d for d in docs.values() if d]
-    total_wall = sum(fnum(d.get("wall_seconds")) for d in produced if math.isfinite(fnum(d.get("wall_seconds"))))
-    commits = sorted({str(dig(d, "provenance.commit", "?")) for d in produced})
-    B.append(("p", f"Targets produced: {len(produced)} of {len(docs)}. Total wall time of the reproduction "
-                   f"(sum over the target files): {total_wall:.0f} s ({total_wall / 3600:.2f} h). "
-                   f"Simulator commit(s): {', '.join(commits) or '–'}."))
-    B.append(("table", ["target", "status", "tier", "method", "scenes", "wall s"],
-              [status_row(t, docs.get(t)) for t in docs]))
+               "our figure, the published numbers next to ours with their verdicts, and the claims it carries.")]
+    B += summary_blocks(s, docs, figs)
 
     for t in ORDER:
         B.append(("h", 2, TITLES[t]))
-        nar = narrative(t)
+        nar = narratives[t]
         if nar:
             B.append(("quote", [(k + ":", nar[k]) for k in ("Claim", "Scene", "Checked") if k in nar]))
         elif t != "schematics":
             B.append(("p", f"No narrative block found in reproduce/{t}.cpp."))
         if t.startswith("tab_"):
             B.append(("raw", tables[t]["md"], tables[t]["html"]))
-            continue
-        png = figs / f"{t}.png"
-        B.append(("img", str(png) if png.is_file() else None, f"{t}: figures/{t}.py"))
-        if t == "schematics":
-            continue
-        if docs.get(t) is None:
-            B.append(("p", f"{t}: not produced ({data / t / (t + '.json')} missing)."))
-            continue
-        rows = published_rows_for(docs[t], summary, pub)
-        if rows:
-            B.append(("table", ["row", "pattern", "coef", "published", "ours", "z", "verdict"], rows))
-        claims = dig(summary_json, "claims") if isinstance(summary_json, dict) else None
-        ids = re.findall(r"C\d\d", (nar or {}).get("Checked", ""))
-        if isinstance(claims, list) and ids:
-            crow = [[c.get("claim_id", c.get("id")), c.get("verdict", "?"), c.get("detail", "")] for c in claims
-                    if c.get("claim_id", c.get("id")) in ids]
-            if crow:
-                B.append(("table", ["claim", "verdict", "detail"], crow))
+        else:
+            B.append(figure_block(figs, t))
+            if t != "schematics" and docs[t] is None:
+                B.append(("p", f"{t}: not produced ({data / t / (t + '.json')} missing)."))
+            elif t != "schematics":
+                shown = rows_shown_by(docs[t], index)
+                if shown:
+                    B.append(row_table(shown, s, pub))
+        B += claims_block(s, sections, t)
 
     B.append(("h", 2, "Modelling choices the paper leaves open"))
     B += choices_blocks(REPO / "paper" / "choices.md")
 
     B.append(("h", 2, "Sensitivity to the open choices"))
-    if docs.get("sensitivity") is None:
+    if docs["sensitivity"] is None:
         B.append(("p", "sensitivity: not produced."))
     else:
-        B.append(("img", str(figs / "sensitivity.png") if (figs / "sensitivity.png").is_file() else None,
-                  "sensitivity: figures/sensitivity.py"))
+        B.append(figure_block(figs, "sensitivity"))
         B.append(("table", ["surface", "choice", "variant", "Δmu_s", "Δmu_d", "sem mu_s (base)", "sem mu_d (base)"],
                   sensitivity_rows(docs["sensitivity"])))
 
     B.append(("h", 2, "Accuracy and cost"))
-    if docs.get("accuracy_cost") is None:
+    if docs["accuracy_cost"] is None:
         B.append(("p", "accuracy_cost: not produced."))
     else:
-        B.append(("img", str(figs / "accuracy_cost.png") if (figs / "accuracy_cost.png").is_file() else None,
-                  "accuracy_cost: figures/accuracy_cost.py"))
-        # The driver's work_precision table: one row per setting and study, errors against the
-        # converged event reference (first peak: per-seed max; mu_d: ensemble mean over its sem).
-        wp = docs["accuracy_cost"].get("work_precision") or []
-        rows = []
-        for r in wp:
-            if r.get("study") == "first_peak":
-                err = f"mu_s {fnum(r.get('error_mu_s')):.2g}, t_slip {fnum(r.get('error_t_slip_s')):.2g} s"
-            else:
-                err = f"mu_d {fnum(r.get('error_mu_d')):.2g} = {fnum(r.get('error_mu_d_over_sem')):.2f} sem"
-            rows.append([r.get("study"), r.get("setting"), err, f"{fnum(r.get('wall_seconds')):.2f}",
-                         f"{fnum(r.get('rhs_evals_total')):.3g}"])
-        for f in docs["accuracy_cost"].get("failed") or []:
-            rows.append([f.get("study"), f.get("setting"), "failed: " + str(f.get("reason")), "-", "-"])
+        B.append(figure_block(figs, "accuracy_cost"))
         B.append(("table", ["study", "setting", "error against the reference", "wall s", "rhs evaluations"],
-                  rows if rows else [["-", "accuracy_cost.json has no work_precision table", "-", "-", "-"]]))
-    B.append(("p", f"Wall time of the whole reproduction (all targets, as recorded in their files): {total_wall:.0f} s."))
+                  accuracy_rows(docs["accuracy_cost"])))
 
     B.append(("h", 2, "Known deviations"))
     kd = read_tsv(REPO / "tables" / "known_deviations.tsv")
-    if kd is None:
-        B.append(("p", "tables/known_deviations.tsv not present."))
-    elif not kd:
-        B.append(("p", "tables/known_deviations.tsv lists no deviations."))
-    else:
-        B.append(("p", "Each entry names the result tiers at which it is expected: a deviation that only the "
-                       "paper tier's 20 repetitions resolve lies inside the CI tier's wider tolerance."))
-        B.append(("table", ["row", "coef", "tiers", "reason"],
-                  [[r.get("row_id"), r.get("coef"), r.get("tiers") or "all", r.get("reason")] for r in kd]))
+    B.append(("p", "Each entry names the result tiers at which it is expected: a deviation that only the paper "
+                   "tier's repetitions resolve is not expected at a tier whose tolerance is too wide to see it."))
+    B.append(("table", ["row", "coef", "tiers", "reason"], [[r["row_id"], r["coef"], r["tiers"], r["reason"]]
+                                                            for r in kd]))
     return B
 
 
@@ -422,21 +509,27 @@ def write_atomic(path, text):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--data", required=True, help="build/reproduce")
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--data", required=True, help="build/reproduce (summary.json and the target documents)")
     p.add_argument("--figures", required=True, help="build/figures (PNG files)")
     p.add_argument("--out", required=True, help="build/paper")
     a = p.parse_args()
-    out = Path(a.out)
+    data, figs, out = Path(a.data), Path(a.figures), Path(a.out)
+    try:
+        summary = schema.load(data / "summary.json")
+    except schema.SummaryError as e:
+        print(f"build_report: {e}", file=sys.stderr)
+        return 2
     out.mkdir(parents=True, exist_ok=True)
-    blocks = build(a)
+    blocks = build(data, figs, summary)
     # In Markdown the figures are linked relative to the report, so the .md stays light.
     md_blocks = [("img", os.path.relpath(b[1], out) if b[1] else None, b[2]) if b[0] == "img" else b for b in blocks]
     write_atomic(out / "report.md", render_md(md_blocks))
     write_atomic(out / "report.html", render_html(blocks, "springblock reproduction report"))
     print(out / "report.md")
     print(out / "report.html")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -1,27 +1,39 @@
 #!/usr/bin/python3
-"""Published against reproduced numbers for the paper's three appendix tables, as Markdown
-and HTML fragments (tab_pat0.md / .html, ...), also imported by paper/build_report.py.
+"""Published against reproduced numbers for the paper's three appendix tables, as Markdown and
+HTML fragments (tab_pat0.md / .html, ...), also imported by paper/build_report.py.
 
-Verdicts come from the check tool's summary.tsv, so the tables and the check can never
-disagree; only when that file is missing are z values recomputed here, marked "unchecked".
-S/S_tot is shown printed and simulated, and flagged where the two differ."""
+Every number and verdict comes from the checker's summary.json (read through
+tools/summary_schema.py), so the tables and the check cannot disagree; without a summary there
+is no table. The one thing the summary does not carry is the simulated contact fraction S/S_tot,
+read from the table target's document and flagged where it differs from the printed one."""
 import argparse
 import csv
 import html
 import json
-import math
 import os
+import sys
 import tempfile
 from fractions import Fraction
 from pathlib import Path
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "tools"))
+import summary_schema as schema  # noqa: E402
+
 TABLES = ("tab_pat0", "tab_pat1", "tab_pat2")
 CAPTIONS = {
     "tab_pat0": "Table tpat0: smooth surface and single-level periodic patterns, N = 360, L_x = 7.2 cm",
     "tab_pat1": "Table tpat1: one-, two- and three-level hierarchical patterns, N = 120, L_x = 2.4 cm",
     "tab_pat2": "Table tpat2: one-, two- and three-level hierarchical patterns, N = 360, L_x = 7.2 cm",
 }
+NOT_MEASURED = "–"  # a cell of a missing result (its verdict cell says "missing" and why)
+
+# The columns of one published number, the same in every table of the report: the published and
+# reproduced values, the difference, and the two thresholds behind the verdict.
+DETAIL_HEAD = ["coef", "published", "ours", "n", "d", "z", "k", "k·σ (detect)", "t95·σ (equiv.)", "Δ", "verdict"]
+VERDICT_CLASS = {"agree": "ok", "disagree_known": "known", "disagree_new": "bad", "not_resolved": "unres",
+                 "missing": "bad", "holds": "ok", "fails_known": "known", "fails_new": "bad"}
 
 
 def read_tsv(path):
@@ -30,148 +42,88 @@ def read_tsv(path):
     return list(csv.DictReader(lines, delimiter="\t"))
 
 
-def fnum(v):
-    try:
-        x = float(v)
-        return x if math.isfinite(x) else math.nan
-    except (TypeError, ValueError):
-        return math.nan
+def verdict_text(rec):
+    return rec["verdict"] + (" STALE" if rec["stale"] else "")
 
 
-def load_summary(data):
-    p = Path(data) / "summary.tsv"
-    if not p.is_file():
-        return None
-    return {(r["row_id"], r["coef"]): r for r in read_tsv(p)}
+def detail_cells(rec):
+    """The cells of DETAIL_HEAD for one row record of the summary."""
+    pub = f"{rec['published']:.3f} ± {rec['err']:.3f}"
+    if rec["verdict"] == "missing":
+        return [rec["coef"], pub] + [NOT_MEASURED] * 7 + [f"{rec['delta']:.2f}", verdict_text(rec)]
+    return [rec["coef"], pub, f"{rec['ours']:.4f} ± {rec['sem']:.4f}", str(rec["n"]), f"{rec['d']:+.4f}",
+            f"{rec['z']:+.2f}", f"{rec['k']:.2f}", f"{rec['detection']:.4f}", f"{rec['equivalence']:.4f}",
+            f"{rec['delta']:.2f}", verdict_text(rec)]
 
 
-def load_ours(data, table):
-    """row_id -> scene of build/reproduce/<table>/<table>.json, or None if not produced."""
+def contact_fractions(data, table):
+    """row_id -> simulated S/S_tot, or None when the target was not produced."""
     p = Path(data) / table / f"{table}.json"
     if not p.is_file():
         return None
-    try:
-        doc = json.loads(p.read_text())
-    except ValueError:
-        return None
-    out = {}
-    for s in doc.get("scenes") or []:
-        rid = (s.get("x") or {}).get("row_id") or s.get("id")
-        out[rid] = s
-    return out
+    doc = json.loads(p.read_text())
+    return {s["id"]: Fraction(s["result"]["contact_fraction"]).limit_denominator(1000) for s in doc["scenes"]}
 
 
-def fmt(m, e, digits=3):
-    if not math.isfinite(m):
-        return "–"
-    return f"{m:.{digits}f} ± {e:.{digits}f}" if math.isfinite(e) else f"{m:.{digits}f}"
+HEAD = ["row", "pattern", "S/S_tot printed", "S/S_tot ours"] + DETAIL_HEAD
 
 
-def rows_of(data, table, summary):
-    """One dict per published row with everything the renderers need."""
-    ours = load_ours(data, table)
+def table_lines(data, table, summary):
+    """[(cells, flagged)] per published number of one table, in the printed order."""
+    recs = {(r["row_id"], r["coef"]): r for r in summary["rows"]}
+    fractions = contact_fractions(data, table)
     out = []
     for r in read_tsv(HERE / f"published_{table}.tsv"):
-        rid = r["row_id"]
-        s = (ours or {}).get(rid)
         printed = Fraction(int(r["S_over_Stot_num"]), int(r["S_over_Stot_den"]))
-        cf = (s or {}).get("result", {}).get("contact_fraction")
-        sim = Fraction(cf).limit_denominator(1000) if isinstance(cf, (int, float)) else None
-        row = {"row_id": rid, "pattern": r["pattern"], "S_printed": printed, "S_ours": sim,
-               "S_differs": sim is not None and sim != printed, "produced": s is not None}
-        for c in ("mu_s", "mu_d"):
-            pub, err = fnum(r[c]), fnum(r[c + "_err"])
-            res = ((s or {}).get("result") or {}).get(c) or {}
-            m, sem = fnum(res.get("mean")), fnum(res.get("sem"))
-            chk = (summary or {}).get((rid, c))
-            if chk:
-                z, verdict = fnum(chk.get("z")), chk.get("verdict", "?")
-                if not math.isfinite(m):
-                    m, sem = fnum(chk.get("ours")), fnum(chk.get("sem"))
-            else:
-                den = math.hypot(err, sem) if math.isfinite(sem) else math.nan
-                z = (m - pub) / den if math.isfinite(m) and den > 0 else math.nan
-                verdict = "unchecked" if math.isfinite(m) else "not produced"
-            row[c] = {"pub": pub, "err": err, "ours": m, "sem": sem, "z": z, "verdict": verdict}
-        out.append(row)
-    return out, ours is not None
-
-
-HEAD = ["row", "pattern", "S/S_tot printed", "S/S_tot ours", "mu_s published", "mu_s ours", "z",
-        "verdict", "mu_d published", "mu_d ours", "z", "verdict"]
-
-
-def cells(row):
-    s_ours = str(row["S_ours"]) if row["S_ours"] is not None else "–"
-    if row["S_differs"]:
-        s_ours += " ⚑"
-    out = [row["row_id"], row["pattern"], str(row["S_printed"]), s_ours]
-    for c in ("mu_s", "mu_d"):
-        d = row[c]
-        out += [fmt(d["pub"], d["err"]), fmt(d["ours"], d["sem"]),
-                f"{d['z']:+.1f}" if math.isfinite(d["z"]) else "–", d["verdict"]]
+        ours = None if fractions is None else fractions[r["row_id"]]
+        flagged = ours is not None and ours != printed
+        s_ours = "not produced" if ours is None else str(ours) + (" ⚑" if flagged else "")
+        for coef in ("mu_s", "mu_d"):
+            out.append(([r["row_id"], r["pattern"], str(printed), s_ours] + detail_cells(recs[(r["row_id"], coef)]),
+                        flagged))
     return out
 
 
-def counts(rows):
-    n = {}
-    for r in rows:
-        for c in ("mu_s", "mu_d"):
-            n[r[c]["verdict"]] = n.get(r[c]["verdict"], 0) + 1
-    return n
+def note(lines):
+    flagged = sorted({cells[0] for cells, f in lines if f})
+    if not flagged:
+        return ""
+    return ("⚑ simulated S/S_tot differs from the printed value: " + ", ".join(flagged) +
+            " (tables/README.md: the printed fraction is not reachable with whole subdivision units).")
 
 
-def note(table, rows, produced):
-    parts = []
-    if not produced:
-        parts.append(f"{table}: not produced (no {table}.json); published values only.")
-    flagged = [r["row_id"] for r in rows if r["S_differs"]]
-    if flagged:
-        parts.append("⚑ simulated S/S_tot differs from the printed value: " + ", ".join(flagged) +
-                     " (see tables/README.md: the printed fraction is not reachable with whole subdivision units).")
-    return " ".join(parts)
+def markdown(table, lines):
+    out = [f"**{CAPTIONS[table]}**", "", "| " + " | ".join(HEAD) + " |", "|" + "|".join("---" for _ in HEAD) + "|"]
+    out += ["| " + " | ".join(cells) + " |" for cells, _ in lines]
+    n = note(lines)
+    return "\n".join(out + ([""] + [n] if n else [])) + "\n"
 
 
-def markdown(table, rows, produced):
-    lines = [f"**{CAPTIONS[table]}**", "", "| " + " | ".join(HEAD) + " |",
-             "|" + "|".join("---" for _ in HEAD) + "|"]
-    lines += ["| " + " | ".join(cells(r)) + " |" for r in rows]
-    n = note(table, rows, produced)
-    return "\n".join(lines + ([""] + [n] if n else [])) + "\n"
+def cell_html(text, cls=""):
+    return f'<td class="{cls}">{html.escape(text)}</td>' if cls else f"<td>{html.escape(text)}</td>"
 
 
-VERDICT_CLASS = {"agree": "ok", "disagree": "bad", "known_deviation": "known"}
-
-
-def html_table(table, rows, produced):
+def html_table(table, lines):
+    verdict_col, s_col = HEAD.index("verdict"), HEAD.index("S/S_tot ours")
     h = [f'<table class="cmp"><caption>{html.escape(CAPTIONS[table])}</caption>',
          "<thead><tr>" + "".join(f"<th>{html.escape(c)}</th>" for c in HEAD) + "</tr></thead><tbody>"]
-    for r in rows:
-        cs = cells(r)
-        tds = []
-        for i, c in enumerate(cs):
-            cls = ""
-            if i in (7, 11):
-                cls = VERDICT_CLASS.get(c, "")
-            if i == 3 and r["S_differs"]:
-                cls = "flag"
-            tds.append(f'<td class="{cls}">{html.escape(c)}</td>' if cls else f"<td>{html.escape(c)}</td>")
+    for cells, flagged in lines:
+        tds = [cell_html(c, VERDICT_CLASS[c.split()[0]] if i == verdict_col else
+                         "flag" if i == s_col and flagged else "") for i, c in enumerate(cells)]
         h.append("<tr>" + "".join(tds) + "</tr>")
     h.append("</tbody></table>")
-    n = note(table, rows, produced)
+    n = note(lines)
     if n:
         h.append(f'<p class="note">{html.escape(n)}</p>')
     return "\n".join(h) + "\n"
 
 
-def render(data):
-    """{table: {"md", "html", "counts", "produced"}} for every table."""
-    summary = load_summary(data)
+def render(data, summary):
+    """{table: {"md", "html"}} for every table."""
     out = {}
     for t in TABLES:
-        rows, produced = rows_of(data, t, summary)
-        out[t] = {"md": markdown(t, rows, produced), "html": html_table(t, rows, produced),
-                  "counts": counts(rows), "produced": produced, "rows": rows}
+        lines = table_lines(data, t, summary)
+        out[t] = {"md": markdown(t, lines), "html": html_table(t, lines)}
     return out
 
 
@@ -185,17 +137,19 @@ def write_atomic(path, text):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--data", required=True, help="build/reproduce (summary.tsv, tab_pat*/tab_pat*.json)")
+    p.add_argument("--data", required=True, help="build/reproduce (summary.json, tab_pat*/tab_pat*.json)")
     p.add_argument("--out", required=True, help="directory for tab_pat*.md and tab_pat*.html")
     a = p.parse_args()
+    try:
+        summary = schema.load(Path(a.data) / "summary.json")
+    except schema.SummaryError as e:
+        sys.exit(f"render_tables: {e}")
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
-    if load_summary(a.data) is None:
-        print(f"render_tables: {a.data}/summary.tsv missing: z recomputed here, verdicts marked 'unchecked'")
-    for t, r in render(a.data).items():
+    for t, r in render(a.data, summary).items():
         write_atomic(out / f"{t}.md", r["md"])
         write_atomic(out / f"{t}.html", r["html"])
-        print(out / f"{t}.md", r["counts"])
+        print(out / f"{t}.md", schema.format_counts(schema.target_counts(summary, t)))
 
 
 if __name__ == "__main__":

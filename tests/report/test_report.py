@@ -1,0 +1,222 @@
+#!/usr/bin/python3
+"""The report tells what the summary says: build it from a real summary.json into a temporary
+directory, then read report.md back and compare.
+
+Asserted: the counts printed in the Summary equal summary.json's; every published number appears
+(in its table) and wherever it appears its verdict and every number behind it (published, ours,
+n, d, z, k, both thresholds, Delta) equal the summary's to the printed precision; every claim
+appears, and wherever it appears its verdict and its comparison lines equal the summary's; the
+claims overview, the tier-resolution table and the z-score numbers equal the summary's; no
+placeholder ('?', None, nan, unchecked) appears anywhere.
+
+Usage: test_report.py --data DIR (DIR/summary.json and the target documents; CTest: the
+configured tier's build/reproduce)."""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+sys.dont_write_bytecode = True
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(REPO, "tools"))
+import summary_schema as schema  # noqa: E402
+
+FAILURES = []
+
+
+def check(ok, message):
+    if not ok:
+        FAILURES.append(message)
+
+
+def tables(md):
+    """Every Markdown table as (header, [cells]) in order."""
+    out, lines, i = [], md.splitlines(), 0
+    while i < len(lines):
+        if lines[i].startswith("| ") and i + 1 < len(lines) and lines[i + 1].startswith("|---"):
+            head = split_row(lines[i])
+            body, i = [], i + 2
+            while i < len(lines) and lines[i].startswith("| "):
+                body.append(split_row(lines[i]))
+                i += 1
+            out.append((head, body))
+        else:
+            i += 1
+    return out
+
+
+def split_row(line):
+    cells = re.split(r"(?<!\\)\|", line.strip())[1:-1]
+    return [c.strip().replace("\\|", "|") for c in cells]
+
+
+def decimals(text):
+    m = re.search(r"\.(\d+)", text)
+    return len(m.group(1)) if m else 0
+
+
+def same_number(printed, value):
+    """printed (a cell) shows value to its printed precision."""
+    try:
+        x = float(printed.replace("−", "-"))
+    except ValueError:
+        return False
+    return abs(x - value) <= 0.5 * 10 ** -decimals(printed) * (1 + 1e-9) + 1e-12
+
+
+def check_row_line(cells, head, rec, where):
+    col = {h: i for i, h in enumerate(head)}
+    verdict = rec["verdict"] + (" STALE" if rec["stale"] else "")
+    check(cells[col["verdict"]] == verdict, f"{where}: verdict '{cells[col['verdict']]}', summary '{verdict}'")
+    pub, err = cells[col["published"]].split(" ± ")
+    check(same_number(pub, rec["published"]) and same_number(err, rec["err"]), f"{where}: published")
+    check(same_number(cells[col["Δ"]], rec["delta"]), f"{where}: Delta")
+    measured = ["ours", "n", "d", "z", "k", "k·σ (detect)", "t95·σ (equiv.)"]
+    if rec["verdict"] == "missing":
+        check(all(cells[col[m]] == "–" for m in measured), f"{where}: a missing row shows numbers")
+        return
+    ours, sem = cells[col["ours"]].split(" ± ")
+    pairs = [(ours, rec["ours"]), (sem, rec["sem"]), (cells[col["n"]], rec["n"]), (cells[col["d"]], rec["d"]),
+             (cells[col["z"]], rec["z"]), (cells[col["k"]], rec["k"]),
+             (cells[col["k·σ (detect)"]], rec["detection"]), (cells[col["t95·σ (equiv.)"]], rec["equivalence"])]
+    for printed, value in pairs:
+        check(same_number(printed, value), f"{where}: '{printed}' is not {value}")
+
+
+def check_rows(md, s):
+    recs = {(r["row_id"], r["coef"]): r for r in s["rows"]}
+    seen = set()
+    for head, body in tables(md):
+        if not {"row", "coef", "verdict"} <= set(head):
+            continue
+        for cells in body:
+            key = (cells[head.index("row")], cells[head.index("coef")])
+            check(key in recs, f"report shows {key}, which the summary does not have")
+            if key in recs:
+                seen.add(key)
+                check_row_line(cells, head, recs[key], f"{key[0]} {key[1]}")
+    missing = sorted(set(recs) - seen)
+    check(not missing, f"published numbers not in the report: {missing}")
+    return len(seen)
+
+
+CLAIM_HEAD = re.compile(r"^- \*\*(C\d\d)\*\* \((.*?)\): \*\*([a-z_]+(?: STALE)?)\*\*(?: \[known deviation\])?\. (.*)$")
+DETAIL = re.compile(r"^  - (ok|fail|unresolved|missing): (.*)$")
+
+
+def check_claims(md, s):
+    recs = {c["claim_id"]: c for c in s["claims"]}
+    appearances = {}
+    lines = md.splitlines()
+    for i, line in enumerate(lines):
+        m = CLAIM_HEAD.match(line)
+        if not m:
+            continue
+        cid, verdict = m.group(1), m.group(3)
+        details = []
+        for nxt in lines[i + 1:]:
+            d = DETAIL.match(nxt)
+            if not d:
+                break
+            details.append((d.group(1), d.group(2)))
+        appearances[cid] = appearances.get(cid, 0) + 1
+        rec = recs[cid]
+        want = rec["verdict"] + (" STALE" if rec["stale"] else "")
+        check(verdict == want, f"{cid}: verdict '{verdict}' in the report, '{want}' in the summary")
+        expected = [(ln["status"], ln["text"]) for ln in rec["lines"]]
+        if rec["verdict"] == "missing":
+            expected.append(("missing", rec["note"]))
+        check(details == expected, f"{cid}: detail lines differ from the summary's")
+        check(m.group(4) == rec["statement"], f"{cid}: statement differs")
+        check(("[known deviation]" in line) == bool(rec["known_deviation"]), f"{cid}: known-deviation mark")
+    absent = sorted(set(recs) - set(appearances))
+    check(not absent, f"claims not in the report: {absent}")
+    check(len(recs) == 35, f"the summary has {len(recs)} claims, the paper's table 35")
+    # The overview table of the Summary.
+    overview = [body for head, body in tables(md) if head == ["claim", "figure", "verdict"]]
+    check(len(overview) == 1, "one claims overview table")
+    if overview:
+        got = {cells[0]: cells[2] for cells in overview[0]}
+        check(got == {c: r["verdict"] + (" STALE" if r["stale"] else "") for c, r in recs.items()},
+              "claims overview differs from the summary")
+    return sum(appearances.values())
+
+
+def check_summary_section(md, s):
+    found = {tuple(head): body for head, body in tables(md)}
+    for head, key in ((("published numbers", "count"), "rows"), (("claims", "count"), "claims")):
+        body = found.get(head)
+        check(body is not None, f"no counts table {head}")
+        if body is None:
+            continue
+        printed = {cells[0]: int(cells[1]) for cells in body}
+        want = dict(s["counts"][key], total=sum(s["counts"][key].values()))
+        check(printed == want, f"counts of {key}: report {printed}, summary {want}")
+    check(f"Tier **{s['tier']}** ({s['tier_reps'][s['tier']]} repetitions" in md, "tier line")
+    res = [body for head, body in tables(md) if head[:2] == ["tier", "repetitions"]]
+    check(len(res) == 1, "one tier-resolution table")
+    if res:
+        check([cells[0] for cells in res[0]] == list(s["resolution"]), "tiers of the resolution table")
+        for cells in res[0]:
+            r = s["resolution"][cells[0]]
+            want = [str(r["reps"])]
+            for coef in schema.COEFS:
+                want.append(f"{r[coef]['certifiable']} of {r[coef]['rows']}")
+                check(same_number(cells[len(want) + 1], r[coef]["median_equivalence"]), f"{cells[0]} {coef} t95σ")
+                check(same_number(cells[len(want) + 2], r[coef]["median_detection"]), f"{cells[0]} {coef} kσ")
+                want += [cells[len(want) + 1], cells[len(want) + 2]]
+            check(cells[1:] == want, f"resolution row {cells[0]}")
+    z = s["z_distribution"]
+    zt = [body for head, body in tables(md) if head[0] == "fraction of z within ±"]
+    check(len(zt) == 1, "one z-score table")
+    if zt:
+        ours, normal = zt[0]
+        for i, c in enumerate(schema.Z_CUTS):
+            check(same_number(ours[i + 1], z["within"][c]) and same_number(normal[i + 1], z["normal"][c]),
+                  f"z within {c}")
+    m = re.search(r"Sample standard deviation of z: ([\d.]+) .*?mu_s alone ([\d.]+), mu_d alone ([\d.]+)\); "
+                  r"mean ([-+]?\d+\.\d+)", md)
+    check(m is not None, "z-score sentence")
+    if m:
+        for printed, value in zip(m.groups(), (z["sd"], z["sd_by_coef"]["mu_s"], z["sd_by_coef"]["mu_d"], z["mean"])):
+            check(same_number(printed, value), f"z statistics: {printed} vs {value}")
+    for item in s["stale"]:
+        check(item in md, f"stale known deviation {item} not reported")
+
+
+def check_placeholders(md):
+    for pattern, name in ((r"(?:^|[\s|(])\?(?=[\s|)]|$)", "'?'"), (r"\bNone\b", "None"),
+                          (r"\b(?:nan|NaN)\b", "nan"), (r"\bunchecked\b", "unchecked")):
+        hits = [ln for ln in md.splitlines() if re.search(pattern, ln)]
+        check(not hits, f"placeholder {name} in the report: {hits[:3]}")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--data", required=True)
+    a = ap.parse_args()
+    s = schema.load(os.path.join(a.data, "summary.json"))
+    with tempfile.TemporaryDirectory() as tmp:
+        p = subprocess.run([sys.executable, os.path.join(REPO, "paper", "build_report.py"), "--data", a.data,
+                            "--figures", os.path.join(tmp, "figures"), "--out", tmp], capture_output=True, text=True)
+        if p.returncode != 0:
+            print(p.stdout + p.stderr)
+            print("FAIL: build_report.py exited", p.returncode)
+            return 1
+        with open(os.path.join(tmp, "report.md")) as f:
+            md = f.read()
+    n_rows = check_rows(md, s)
+    n_claims = check_claims(md, s)
+    check_summary_section(md, s)
+    check_placeholders(md)
+    for f in FAILURES:
+        print("FAIL:", f)
+    print(f"tier {s['tier']}: {n_rows} published numbers and {len(s['claims'])} claims ({n_claims} appearances) "
+          f"checked against summary.json: {len(FAILURES)} problem(s)")
+    return 1 if FAILURES else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
