@@ -65,6 +65,19 @@ def arguments(description, extra=None):
 
 # ---------------------------------------------------------------- reading results
 
+def load_study(data_dir, study):
+    """An optional study's JSON (`make studies`): the build tree's copy if it ran there, else the
+    committed one under paper/data/. None (with a message) when neither exists."""
+    path = Path(data_dir) / study / f"{study}.json"
+    if not path.is_file():
+        path = Path(__file__).resolve().parent.parent / "paper" / "data" / f"{study}.json"
+    if not path.is_file():
+        warn(f"{study}: optional study not run (make studies) and not committed")
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
 def load_target(data_dir, target):
     """The target's JSON as a dict, or None (with a message) if it is missing or unreadable."""
     path = Path(data_dir) / target / f"{target}.json"

@@ -2,8 +2,12 @@
 Claim: (ours, not the paper's) The paper integrates with fixed-step RK4 at h = 1e-4 ms and
 resolves every stick/slip switch to one step, so refining h does not converge switching times at
 fourth order. This target measures what each digit of accuracy costs: error against wall time
-and against right-hand-side evaluations, for RK4 at h = 4, 2, 1, 0.5 and 0.25 x 1e-7 s and for the
-event-driven method over a range of tolerances.
+and against right-hand-side evaluations, for RK4 at h = 4, 2 and 1 x 1e-7 s (the paper's step and
+coarser) and for the event-driven method over a range of tolerances (every decade from 1e-6 to 1e-8, which
+brackets the default: the loosest decade whose first-peak error is below a tenth of the smallest
+mu_s standard error of the reproduction). RK4 below the paper's step
+(0.5 and 0.25 x 1e-7 s) costs more than everything else here together; it is the optional study
+rk4_refinement (`make studies`, committed under paper/data/), drawn in the same figure.
 Scene: (A) first macroscopic peak, N = 360, L_x = 7.2 cm, periodic:10,10 (grooves keep RK4 from
 jumping over quiet phases), each repetition stopped at its first macroscopic slip, mu(t) sampled
 every 1e-6 s, the same seeds for every method. Before chaos sets in the peak is a deterministic
@@ -16,133 +20,13 @@ tol 1e-11 (listed as "reference check").
 Checked: the reference check differs from the reference by far less than any setting's error;
 every setting that could not run is listed under "failed" with its reason rather than dropped.
 */
-#include <cmath>
-#include <string>
-#include <vector>
-
 #include "common.hpp"
-#include "springblock/units.hpp"
-
-namespace {
-
-struct Setting {
-  std::string name;  // e.g. "rk4 h=1e-07", "event tol=1e-08"
-  sb::Method method;
-  double dt_s = 1e-7, tol = 1e-9;
-  bool reference = false, reference_check = false;
-};
-
-std::vector<Setting> settings() {
-  std::vector<Setting> s;
-  for (double f : {4.0, 2.0, 1.0, 0.5, 0.25}) {
-    char name[64];
-    std::snprintf(name, sizeof name, "rk4 h=%.3gs", f * 1e-7);
-    s.push_back({name, sb::Method::RK4, f * 1e-7, 1e-9});  // tol unused by RK4, kept valid
-  }
-  for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {
-    char name[64];
-    std::snprintf(name, sizeof name, "event tol=%.0e", tol);
-    s.push_back({name, sb::Method::Event, 1e-7, tol});
-  }
-  s.push_back({"event tol=1e-11 (reference check)", sb::Method::Event, 1e-7, 1e-11, false, true});
-  s.push_back({"event tol=1e-12 (reference)", sb::Method::Event, 1e-7, 1e-12, true, false});
-  return s;
-}
-
-nlohmann::json failed_list = nlohmann::json::array();
-
-std::vector<repro::LabelledScene> plan(const repro::Context& ctx) {
-  std::vector<repro::LabelledScene> out;
-  for (const auto& st : settings()) {
-    for (const char* study : {"first_peak", "mu_d"}) {
-      const bool peak = std::string(study) == "first_peak";
-      repro::LabelledScene ls;
-      ls.scene = peak ? ctx.chain(360, "7.2cm", "periodic:10,10") : ctx.chain(200, "4cm");
-      ls.scene.run.method = st.method;
-      ls.scene.run.dt_s = st.dt_s;
-      ls.scene.run.tol = st.tol;
-      if (peak) {
-        // Three seeds suffice: the per-seed error is deterministic, not a statistic.
-        ls.scene.reps = std::min(ls.scene.reps, 3);
-        ls.scene.run.stop_after_mu_s = true;
-        ls.scene.run.sample_dt_s = 1e-6;
-      }
-      ls.shared_seed = true;  // identical draws for every setting: differences are numerical
-      ls.id = std::string(study) + ":" + st.name;
-      ls.label = st.name;
-      ls.x = {{"study", study},          {"setting", st.name},
-              {"method", sb::method_name(st.method)}, {"dt_s", st.dt_s},
-              {"tol", st.tol},           {"reference", st.reference},
-              {"reference_check", st.reference_check}};
-      try {
-        sb::validate(ls.scene);
-        out.push_back(std::move(ls));
-      } catch (const sb::InputError& e) {
-        failed_list.push_back({{"study", study}, {"setting", st.name}, {"reason", e.what()}});
-      }
-    }
-  }
-  return out;
-}
-
-const nlohmann::json* find_reference(const nlohmann::json& scenes, const std::string& study) {
-  for (const auto& s : scenes)
-    if (s["x"]["study"] == study && s["x"]["reference"].get<bool>()) return &s;
-  return nullptr;
-}
-
-double num(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
-
-// Error table: per setting and study, cost (wall seconds, rhs evaluations) and error against the
-// reference. The scenes share one pool of threads (repro::run_target), so a setting's wall
-// seconds are its repetitions' wall times summed and divided by the thread count: what it costs
-// on this machine, without the idle tail of a scene whose 3 seeds do not split over 2 threads. First peak: max over seeds of |mu_s - ref| and |t_slip - ref|. mu_d: |mean - ref|
-// divided by the reference's standard error.
-void finish(const repro::Context&, nlohmann::json& doc) {
-  nlohmann::json table = nlohmann::json::array();
-  for (const char* study : {"first_peak", "mu_d"}) {
-    const auto* ref = find_reference(doc["scenes"], study);
-    if (!ref) continue;
-    const auto& ref_runs = (*ref)["result"]["runs"];
-    for (const auto& s : doc["scenes"]) {
-      if (s["x"]["study"] != study) continue;
-      const auto& r = s["result"];
-      nlohmann::json row = {{"study", study},
-                            {"setting", s["x"]["setting"]},
-                            {"method", s["x"]["method"]},
-                            {"dt_s", s["x"]["dt_s"]},
-                            {"tol", s["x"]["tol"]},
-                            {"reference", s["x"]["reference"]},
-                            {"reference_check", s["x"]["reference_check"]},
-                            {"wall_seconds", r["wall_seconds"]},
-                            {"rhs_evals_total", r["rhs_evals_total"]}};
-      if (std::string(study) == "first_peak") {
-        double e_mu = 0, e_t = 0;
-        for (std::size_t k = 0; k < r["runs"].size() && k < ref_runs.size(); ++k) {
-          e_mu = std::max(e_mu, std::fabs(num(r["runs"][k]["mu_s"]) - num(ref_runs[k]["mu_s"])));
-          e_t = std::max(e_t, std::fabs(num(r["runs"][k]["t_slip_s"]) - num(ref_runs[k]["t_slip_s"])));
-        }
-        row["error_mu_s"] = e_mu;
-        row["error_t_slip_s"] = e_t;
-        row["error"] = e_mu;  // the headline metric plotted by figures/accuracy_cost.py
-      } else {
-        const double ref_mean = num((*ref)["result"]["mu_d"]["mean"]);
-        const double ref_sem = num((*ref)["result"]["mu_d"]["sem"]);
-        const double diff = std::fabs(num(r["mu_d"]["mean"]) - ref_mean);
-        row["error_mu_d"] = diff;
-        row["error_mu_d_over_sem"] = ref_sem > 0 ? diff / ref_sem : std::nan("");
-        row["error"] = diff;
-      }
-      table.push_back(row);
-    }
-  }
-  doc["work_precision"] = table;
-  doc["failed"] = failed_list;
-}
-
-}  // namespace
+#include "work_precision.hpp"
 
 int main(int argc, char** argv) {
-  return repro::run_target(argc, argv, "accuracy_cost", "work-precision: RK4 steps and event tolerances",
-                           plan, finish);
+  const auto settings = repro::work_precision_settings({4e-7, 2e-7, 1e-7}, {1e-4, 1e-6, 1e-7, 1e-8, 1e-10}, true);
+  return repro::run_target(
+      argc, argv, "accuracy_cost", "work-precision: RK4 steps and event tolerances",
+      [&](const repro::Context& ctx) { return repro::work_precision_plan(ctx, settings); },
+      repro::work_precision_finish);
 }

@@ -1,6 +1,7 @@
 #include "common.hpp"
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -60,8 +61,28 @@ std::string format_seconds(double s) {
   return buf;
 }
 
+// Repetitions of every tier, so a reader of one tier's results can say what another would resolve.
+nlohmann::json tier_reps_json() {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& t : tiers()) j[t.name] = t.reps;
+  return j;
+}
+
 // Relative cost of a scene for the overall ETA: simulated block-seconds over all repetitions.
 double cost(const sb::Scene& s) { return s.reps * s.duration() * s.geometry.N; }
+
+std::string mask_text(const sb::Scene& s) {
+  std::string m;
+  for (auto b : sb::build_contact_mask(s.pattern, s.geometry.N, 0)) m += b ? '1' : '0';
+  return m;
+}
+
+// What decides a scene's trajectories and extraction, less the seed and the pattern's spelling.
+nlohmann::json definition_without_seed(nlohmann::json j) {
+  j.erase("seed");
+  j.erase("pattern");
+  return j;
+}
 
 nlohmann::json num(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
@@ -69,12 +90,7 @@ nlohmann::json scene_record(const LabelledScene& ls, const sb::EnsembleResult& r
   nlohmann::json result = sb::ensemble_json(ls.scene, r, cmd);
   result.erase("provenance");  // the document carries one provenance block
   nlohmann::json rec = {{"id", ls.id}, {"label", ls.label}, {"x", ls.x}, {"result", result}};
-  if (ls.scene.pattern.kind != sb::SurfaceKind::Random) {
-    auto mask = sb::build_contact_mask(ls.scene.pattern, ls.scene.geometry.N, 0);
-    std::string m;
-    for (auto b : mask) m += b ? '1' : '0';
-    rec["contact_mask"] = m;
-  }
+  if (ls.scene.pattern.kind != sb::SurfaceKind::Random) rec["contact_mask"] = mask_text(ls.scene);
   if (r.runs.empty()) return rec;
   const auto& run0 = r.runs[0];
   if (!run0.series.empty()) {
@@ -112,10 +128,14 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
+const std::vector<Tier>& tiers() {
+  static const std::vector<Tier> all = {{"paper", 20, 4.0, false}, {"quick", 6, 4.0, false}, {"smoke", 2, 2.0, true}};
+  return all;
+}
+
 Tier tier_named(const std::string& name) {
-  if (name == "paper") return {"paper", 20, 4.0, false};
-  if (name == "quick") return {"quick", 6, 4.0, false};
-  if (name == "smoke") return {"smoke", 2, 2.0, true};
+  for (const auto& t : tiers())
+    if (t.name == name) return t;
   throw sb::InputError("tier", "'" + name + "' is not one of: paper, quick, smoke");
 }
 
@@ -149,12 +169,71 @@ nlohmann::json read_json(const std::string& path) {
   }
 }
 
-nlohmann::json input_document(const Context& ctx, const std::string& target) {
+const nlohmann::json& input_document(const Context& ctx, const std::string& target) {
+  // A table's document is megabytes and a driver may ask for it once per scene it borrows.
+  static std::map<std::string, nlohmann::json> cache;
   for (const auto& path : ctx.opt.inputs) {
-    auto doc = read_json(path);
-    if (doc.value("target", "") == target) return doc;
+    auto it = cache.find(path);
+    if (it == cache.end()) it = cache.emplace(path, read_json(path)).first;
+    if (it->second.value("target", "") == target) return it->second;
   }
   throw sb::InputError("input", ctx.opt.target + " needs --input <" + target + ".json>");
+}
+
+namespace {
+const nlohmann::json& source_record(const Context& ctx, const LabelledScene::Borrow& b) {
+  static std::map<std::pair<std::string, std::string>, nlohmann::json> records;
+  auto it = records.find({b.target, b.id});
+  if (it != records.end()) return it->second;
+  const auto& doc = input_document(ctx, b.target);
+  for (const auto& rec : doc.at("scenes"))
+    if (rec.at("id") == b.id) return records.emplace(std::pair{b.target, b.id}, rec).first->second;
+  throw sb::InputError("input", b.target + ".json has no scene '" + b.id + "'");
+}
+
+// The source's record under our id, label and coordinates. A trace must be the source's
+// repetition 0 again (same seed, same scene): the same first slip to the last bit. Its mu_s and
+// mu_d may differ in the last bits only: keeping a series makes the observer evaluate every
+// sample one by one where the table's run took quiet stretches in closed form (affine sums).
+nlohmann::json borrowed_record(const Context& ctx, const LabelledScene& ls, const sb::EnsembleResult* trace) {
+  nlohmann::json rec = source_record(ctx, ls.borrow);
+  rec.erase("trajectory_from");  // an id of the source target, meaningless here
+  rec["id"] = ls.id, rec["label"] = ls.label, rec["x"] = ls.x;
+  rec["borrowed_from"] = ls.borrow.target + "/" + ls.borrow.id;
+  if (!trace) return rec;
+  const auto& run0 = rec.at("result").at("runs").at(0);
+  const auto& mine = trace->runs.at(0);
+  auto value = [](const nlohmann::json& a) { return a.is_null() ? std::nan("") : a.get<double>(); };
+  auto same = [&](const nlohmann::json& a, double b, double rel) {
+    const double x = value(a);
+    return std::isnan(x) ? std::isnan(b) : std::fabs(x - b) <= rel * std::fabs(x);
+  };
+  if (!same(run0.at("mu_s"), mine.mu_s, 1e-12) || !same(run0.at("t_slip_s"), mine.t_slip_s, 0) ||
+      !same(run0.at("mu_d"), mine.mu_d, 1e-12))
+    throw std::runtime_error(fmt::format("{}: the trace is not repetition 0 of {} (mu_s {} vs {}, t_slip {} vs {}, mu_d {} vs {})",
+                                         ls.id, rec["borrowed_from"].get<std::string>(), mine.mu_s,
+                                         value(run0.at("mu_s")), mine.t_slip_s, value(run0.at("t_slip_s")),
+                                         mine.mu_d, value(run0.at("mu_d"))));
+  nlohmann::json traced = scene_record(ls, *trace, "");
+  rec["series"] = traced.at("series");
+  return rec;
+}
+}  // namespace
+
+LabelledScene::Borrow find_borrowable(const Context& ctx, const std::vector<std::string>& targets,
+                                      const sb::Scene& scene) {
+  // A random surface draws a fresh mask per repetition: no mask string stands for it.
+  if (scene.pattern.kind == sb::SurfaceKind::Random) return {};
+  nlohmann::json mine = scene;
+  mine = definition_without_seed(mine);
+  const std::string mask = mask_text(scene);
+  for (const auto& t : targets) {
+    const auto& doc = input_document(ctx, t);
+    for (const auto& rec : doc.at("scenes"))
+      if (rec.value("contact_mask", "") == mask && definition_without_seed(rec.at("result").at("scene")) == mine)
+        return {t, rec.at("id").get<std::string>(), false};
+  }
+  return {};
 }
 
 PatternShape pattern_shape(const std::string& spec) {
@@ -208,7 +287,7 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
   opt.target = target;
   opt.command_line = join_args(argc, argv);
   CLI::App app{target + ": " + summary};
-  app.add_option("--tier", opt.tier, "paper (20 repetitions), quick (6) or smoke (2, short; pipeline test only)")
+  app.add_option("--tier", opt.tier, "paper (20 repetitions, the default), quick (6) or smoke (2, short; pipeline test only)")
       ->check(CLI::IsMember({"paper", "quick", "smoke"}));
   app.add_option("--out", opt.out, "directory for " + target + ".json");
   app.add_option("--method", opt.method, "integrator: event (default; falls back to rk4 if absent) or rk4")
@@ -261,12 +340,28 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
   try {
     // All scenes' repetitions in one pool (sb::run_ensembles): the threads never wait at the
     // end of a scene. Progress and ETA are over the whole target, scenes weighted by cost().
+    // Borrowed scenes enter the pool only as their one-repetition trace, if they keep one.
     std::vector<sb::Scene> pool;
     std::vector<double> weights;
-    for (const auto& ls : scenes) pool.push_back(ls.scene), weights.push_back(cost(ls.scene));
+    std::vector<int> pooled(scenes.size(), -1);  // scene -> its pool entry
+    std::vector<std::size_t> owner;              // pool entry -> scene
+    const Context ctx(opt, tier, method);
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+      const auto& ls = scenes[k];
+      sb::Scene sim = ls.scene;
+      if (!ls.borrow.target.empty()) {
+        if (!ls.borrow.trace) continue;
+        sim.seed = source_record(ctx, ls.borrow).at("result").at("seed").get<std::uint64_t>();
+        sim.reps = 1;
+        sim.observe.series = true;
+      }
+      pooled[k] = static_cast<int>(pool.size());
+      owner.push_back(k);
+      pool.push_back(sim), weights.push_back(cost(sim));
+    }
     auto progress = [&](double f, double elapsed) {
       const std::string eta = f > 0.01 ? format_seconds(elapsed * (1 - f) / f) : "?";
-      std::fprintf(stderr, "\r[%s] %zu scenes, %5.1f%% elapsed %s ETA %s   ", target.c_str(), scenes.size(),
+      std::fprintf(stderr, "\r[%s] %zu scenes, %5.1f%% elapsed %s ETA %s   ", target.c_str(), pool.size(),
                    100 * f, format_seconds(elapsed).c_str(), eta.c_str());
       std::fflush(stderr);
     };
@@ -280,13 +375,19 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
     std::fprintf(stderr, "\n");
     for (std::size_t k = 0; k < scenes.size(); ++k) {
       const auto& ls = scenes[k];
-      const auto& result = results[k];
+      if (!ls.borrow.target.empty()) {
+        records.push_back(borrowed_record(ctx, ls, pooled[k] >= 0 ? &results[pooled[k]] : nullptr));
+        std::fprintf(stderr, "[%s]   %s: %s/%s%s\n", target.c_str(), ls.id.c_str(), ls.borrow.target.c_str(),
+                     ls.borrow.id.c_str(), ls.borrow.trace ? " (+ trace of repetition 0)" : "");
+        continue;
+      }
+      const auto& result = results[pooled[k]];
       std::fprintf(stderr, "[%s]   %s: mu_s = %.4f +- %.4f, mu_d = %.4f +- %.4f (%.1fs of the pool)\n", target.c_str(),
                    ls.id.c_str(), result.mu_s.mean, result.mu_s.sem, result.mu_d.mean, result.mu_d.sem,
                    result.wall_s);
       records.push_back(scene_record(ls, result, opt.command_line));
       // Observed on another scene's simulation (same trajectory, other rules or run length).
-      if (result.trajectory_from >= 0) records.back()["trajectory_from"] = scenes[result.trajectory_from].id;
+      if (result.trajectory_from >= 0) records.back()["trajectory_from"] = scenes[owner[result.trajectory_from]].id;
     }
     const Tier& t = tier;
     nlohmann::json doc = {{"target", target},
@@ -294,6 +395,7 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
                           {"method", sb::method_name(method)},
                           {"method_requested", opt.method},
                           {"reps", t.reps},
+                          {"tier_reps", tier_reps_json()},
                           {"duration_t0", t.duration_t0},
                           {"seed", opt.seed},
                           {"provenance", sb::provenance(opt.command_line)},

@@ -30,11 +30,12 @@ struct Tier {
   double duration_t0;  // run length in loading times t0 (see sb::RunControl)
   bool reduced;        // drivers may thin their parameter sweeps
 };
+const std::vector<Tier>& tiers();           // paper, quick, smoke
 Tier tier_named(const std::string& name);  // throws sb::InputError("tier")
 
 struct Options {
   std::string target;
-  std::string tier = "quick";
+  std::string tier = "paper";
   std::string out = ".";
   std::string method = "event";
   int threads = 0;
@@ -55,6 +56,14 @@ struct LabelledScene {
   // compares variants of one scene sets this to keep --seed for all of them: the variants then
   // see the same micro coefficients and their differences are paired.
   bool shared_seed = false;
+  // Borrowed scenes are not simulated here: their result is another target's record (given with
+  // --input) of the same simulation, found with find_borrowable(). With trace set, repetition 0
+  // is simulated once more with the source's seed to keep its mu(t) series, and must give the
+  // source's repetition-0 numbers to the last bit (the proof that it is the same trajectory).
+  struct Borrow {
+    std::string target, id;  // empty target: simulate
+    bool trace = false;
+  } borrow = {};
 };
 
 class Context {
@@ -83,7 +92,15 @@ std::vector<TableRow> read_table(const std::string& path);  // throws std::runti
 nlohmann::json read_json(const std::string& path);  // throws std::runtime_error
 
 // The document of another target given with --input (matched by its "target" key).
-nlohmann::json input_document(const Context& ctx, const std::string& target);  // throws InputError
+// The document stays cached for the life of the process: hold the reference, not a temporary's part.
+const nlohmann::json& input_document(const Context& ctx, const std::string& target);  // throws InputError
+
+// The record of another --input target that simulated the same thing as `scene`: every field of
+// the scene definition equal except the seed (ours derives from our own scene id), and the same
+// contact mask (so periodic:6,6 and hierarchical:6 match when they lay out the same surface).
+// Returns {target, id}, or an empty target when none of the listed targets has one.
+LabelledScene::Borrow find_borrowable(const Context& ctx, const std::vector<std::string>& targets,
+                                      const sb::Scene& scene);
 
 // Groove sizes of a pattern spec: periodic:NP,NG -> {NG} (and n_p), hierarchical:G1,G2 -> {G1,G2}.
 struct PatternShape {

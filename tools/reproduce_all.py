@@ -1,21 +1,34 @@
 #!/usr/bin/python3
-"""Build every reproduction target in order, with overall progress and ETA, then the summary.
+"""make reproduce-all: build the drivers, run every figure/table target, compare, draw, report.
 
-Each target is a CMake custom target (reproduce_<name>), so an up-to-date JSON is not rebuilt.
-The ETA weights targets by their wall time in the previous run of the same tier (stored in
-<build>/reproduce/timings.json); on a first run every target counts the same.
-Usage: reproduce_all.py BUILD_DIR [targets to build at the end if the build defines them,
-       e.g. figures report]
+What a user sees is one line per step: each target with its wall time and the verdicts of the
+published numbers and claims it carries, then the figures and the report, and while a step runs,
+one progress line with an ETA over the whole job. Everything the tools print goes to
+<build>/logs/<step>.log; when a step fails its log's tail is shown.
+
+The ETA weights the targets by their wall time in the previous run of the same tier
+(<build>/reproduce/timings.json) and follows each target's own progress (its "NN.N%" lines).
+Usage: reproduce_all.py BUILD_DIR [--jobs N] [--studies]
 """
+import argparse
 import json
 import os
+import re
+import shutil
 import subprocess
 import sys
 import time
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+import reproduction_counts  # noqa: E402  (verdict counts per target, from the checker)
+
+PERCENT = re.compile(rb"(\d+(?:\.\d+)?)%")
+
 
 def fmt(s):
-    return f"{s:.0f}s" if s < 120 else f"{s / 60:.1f}min" if s < 7200 else f"{s / 3600:.1f}h"
+    return f"{s:.0f} s" if s < 120 else f"{s / 60:.1f} min" if s < 7200 else f"{s / 3600:.1f} h"
 
 
 def cache_value(build, key):
@@ -23,51 +36,166 @@ def cache_value(build, key):
         for line in f:
             if line.startswith(key + ":"):
                 return line.split("=", 1)[1].strip()
-    return "?"
+    raise KeyError(f"{key} not in {build}/CMakeCache.txt: configure first")
 
 
-def main():
-    build = sys.argv[1]
-    extra = sys.argv[2:]
+class Progress:
+    """One status line: rewritten in place on a terminal, printed once per step otherwise."""
+
+    def __init__(self, total_weight):
+        self.total, self.done, self.t0 = total_weight, 0.0, time.time()
+        self.tty = sys.stderr.isatty()
+        self.shown = ""
+
+    def eta(self, current):
+        elapsed = time.time() - self.t0
+        frac = (self.done + current) / self.total if self.total > 0 else 0
+        return fmt(elapsed * (1 - frac) / frac) if frac > 0.02 and elapsed > 2 else "?"
+
+    def show(self, label, current_weight=0.0, force=False):
+        text = f"  ... {label}  (elapsed {fmt(time.time() - self.t0)}, ETA {self.eta(current_weight)})"
+        if self.tty:
+            sys.stderr.write("\r" + text.ljust(len(self.shown)) + "\r")
+            sys.stderr.flush()
+            self.shown = text
+        elif force:
+            print(text, file=sys.stderr, flush=True)
+
+    def clear(self):
+        if self.tty and self.shown:
+            sys.stderr.write("\r" + " " * len(self.shown) + "\r")
+            sys.stderr.flush()
+            self.shown = ""
+
+
+def run_logged(cmd, log_path, on_output=None):
+    """Run cmd with stdout and stderr into log_path; on_output(chunk) sees the bytes as they come."""
+    with open(log_path, "wb") as log:
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+        while True:
+            chunk = p.stdout.read1(65536) if hasattr(p.stdout, "read1") else p.stdout.read(4096)
+            if not chunk:
+                break
+            log.write(chunk)
+            if on_output:
+                on_output(chunk)
+        return p.wait()
+
+
+def tail(path, lines=30):
+    with open(path, "rb") as f:
+        text = f.read().decode(errors="replace").replace("\r", "\n")
+    return "\n".join([ln for ln in text.splitlines() if ln.strip()][-lines:])
+
+
+def fail(step, log):
+    print(f"reproduce-all: {step} failed; last lines of {log}:", file=sys.stderr)
+    print(tail(log), file=sys.stderr)
+    return 1
+
+
+def read_names(rdir, listing):
+    return [n.strip() for n in open(os.path.join(rdir, listing)) if n.strip()]
+
+
+def run_targets(build, tier, logs, listing, describe):
+    """Each target of the listing in turn (each runs its repetitions on every core): one line per
+    target, one progress line meanwhile. Returns non-zero on the first failure."""
     rdir = os.path.join(build, "reproduce")
-    names = [n.strip() for n in open(os.path.join(rdir, "targets.txt")) if n.strip()]
-    tier = cache_value(build, "SPRINGBLOCK_TIER")
+    names = read_names(rdir, listing)
     tpath = os.path.join(rdir, "timings.json")
     timings = json.load(open(tpath)) if os.path.exists(tpath) else {}
     past = timings.get(tier, {})
     weight = {n: past.get(n, 1.0 if not past else max(past.values())) for n in names}
-    total = sum(weight.values())
-    t0 = time.time()
-    done = 0.0
-    print(f"reproduce-all: {len(names)} targets at tier '{tier}'", flush=True)
+    progress = Progress(sum(weight.values()))
     for i, n in enumerate(names, 1):
-        elapsed = time.time() - t0
-        eta = elapsed * (total - done) / done if done > 0 and elapsed > 1 else None
-        print(f"\n=== [{i}/{len(names)}] {n}  (elapsed {fmt(elapsed)}, ETA {fmt(eta) if eta else '?'})", flush=True)
-        start = time.time()
-        rc = subprocess.call(["cmake", "--build", build, "--target", f"reproduce_{n}"])
-        if rc != 0:
-            print(f"reproduce-all: target {n} failed (exit {rc})", file=sys.stderr)
-            return rc
-        wall = time.time() - start
+        label = f"[{i}/{len(names)}] {n}"
+        progress.show(label, force=True)
+
+        def seen(chunk, label=label, n=n):
+            hits = PERCENT.findall(chunk)
+            if hits:
+                frac = min(1.0, float(hits[-1]) / 100)
+                progress.show(f"{label} {100 * frac:.0f}%", weight[n] * frac)
+
+        log = os.path.join(logs, f"{n}.log")
+        t = time.time()
+        rc = run_logged(["cmake", "--build", build, "--target", f"reproduce_{n}"], log, seen)
+        progress.clear()
+        if rc:
+            return fail(f"target {n}", log)
+        wall = time.time() - t
         if wall > 2:  # an up-to-date target says nothing about its cost
             past[n] = wall
-        done += weight[n]
+        progress.done += weight[n]
+        print(f"  {n:<14}{fmt(wall):>8}   {describe(n)}", flush=True)
     timings[tier] = past
     tmp = tpath + ".tmp"
     json.dump(timings, open(tmp, "w"), indent=1)
     os.replace(tmp, tpath)
-    # The summary, figure scripts and report are independent per figure: run them in parallel.
-    jobs = ["-j", str(os.cpu_count() or 2)]
-    rc = subprocess.call(["cmake", "--build", build, "--target", "reproduce-summary"] + jobs)
-    defined = subprocess.run(["cmake", "--build", build, "--target", "help"], capture_output=True,
-                             text=True).stdout
-    for t in extra:
-        if f"... {t}\n" in defined or f" {t}:" in defined:
-            rc = rc or subprocess.call(["cmake", "--build", build, "--target", t] + jobs)
-    print(f"\nreproduce-all: finished in {fmt(time.time() - t0)} (tier {tier}); "
-          f"summary in {os.path.join(rdir, 'summary.tsv')}")
-    return rc
+    return 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("build")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--studies", action="store_true",
+                    help="run the optional studies instead and copy their documents to paper/data/")
+    a = ap.parse_args()
+    build, jobs = a.build, ["-j", str(a.jobs)]
+    logs = os.path.join(build, "logs")
+    os.makedirs(logs, exist_ok=True)
+    rdir = os.path.join(build, "reproduce")
+    tier = cache_value(build, "SPRINGBLOCK_TIER")
+    t_start = time.time()
+
+    # Only what the reproduction runs: the simulator and the drivers (tests and benchmarks
+    #    are built by `make test` / `make bench`).
+    print(f"reproduce-all: tier '{tier}', logs in {logs}/", flush=True)
+    log = os.path.join(logs, "build.log")
+    t = time.time()
+    if run_logged(["cmake", "--build", build, "--target", "reproduce-programs", "springblock"] + jobs, log):
+        return fail("build", log)
+    print(f"  {'build':<14}{fmt(time.time() - t):>8}", flush=True)
+
+    counter = reproduction_counts.Counter(rdir, os.path.join(REPO, "tables"))
+    studies = a.studies
+    rc = run_targets(build, tier, logs, "studies.txt" if studies else "targets.txt",
+                     (lambda n: "") if studies else counter.line)
+    if rc:
+        return rc
+    if studies:
+        # Committed data: the report and figures read paper/data/<study>.json when the build
+        # tree has no fresher copy.
+        for n in read_names(rdir, "studies.txt"):
+            dst = os.path.join(REPO, "paper", "data", f"{n}.json")
+            os.makedirs(os.path.dirname(dst), exist_ok=True)
+            shutil.copyfile(os.path.join(rdir, n, f"{n}.json"), dst + ".tmp")
+            os.replace(dst + ".tmp", dst)
+            print(f"  {n}: wrote {os.path.relpath(dst, REPO)} (commit it)", flush=True)
+        print(f"reproduce-all: studies done in {fmt(time.time() - t_start)} (tier {tier})", flush=True)
+        return 0
+
+    # 3. Summary, figures, report (independent per figure: in parallel).
+    progress = Progress(0)
+    for step, target in (("summary", "reproduce-summary"), ("figures", "figures"), ("report", "report")):
+        log = os.path.join(logs, f"{step}.log")
+        t = time.time()
+        progress.show(step, force=True)
+        rc = run_logged(["cmake", "--build", build, "--target", target] + jobs, log)
+        progress.clear()
+        if rc:
+            return fail(step, log)
+        extra = ""
+        if step == "summary":
+            extra = counter.total_line()
+        elif step == "report":
+            extra = os.path.join(build, "paper", "report.html")
+        print(f"  {step:<14}{fmt(time.time() - t):>8}   {extra}", flush=True)
+    print(f"reproduce-all: done in {fmt(time.time() - t_start)} (tier {tier}); "
+          f"verdicts in {os.path.join(rdir, 'summary.tsv')}", flush=True)
+    return 0
 
 
 if __name__ == "__main__":
