@@ -116,7 +116,7 @@ std::string accepted_units(Dimension dim) {
 }
 
 double parse_quantity(std::string_view text, Dimension dim, const std::string& field) {
-  const std::string quoted = "'" + std::string(text) + "'";
+  const std::string quoted = std::string("'").append(text).append("'");  // not "'" + string: GCC 12 -Wrestrict
   const std::string_view s = trim(text);
   if (s.empty()) fail(field, "empty value, expected " + describe(dim), dim);
 

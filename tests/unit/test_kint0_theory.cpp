@@ -43,7 +43,9 @@ TEST_P(KInt0, FollowsGaussianAveragedTheory) {
                                           << " bias budget " << bias_budget;
   // The simulation must also resolve the two regimes: above 1/2 the macro value equals the
   // micro mean, below it is clearly larger.
-  if (mu_d < 0.45) EXPECT_GT(r.mu_d.mean, mu_d + 0.05);
+  if (mu_d < 0.45) {
+    EXPECT_GT(r.mu_d.mean, mu_d + 0.05);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(BothRegimes, KInt0, ::testing::Values(0.2, 0.35, 0.6));

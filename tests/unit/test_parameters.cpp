@@ -79,7 +79,9 @@ TEST(Scene, DrawsArePairedAcrossSurfacesAndTruncatedAndClipped) {
   grooved.pattern = parse_pattern("periodic:2,2");
   auto a = build_chain(smooth, 3), b = build_chain(grooved, 3);
   for (int i = 0; i < a.N; ++i)
-    if (b.contact[i]) EXPECT_EQ(a.mu_s[i], b.mu_s[i]);
+    if (b.contact[i]) {
+      EXPECT_EQ(a.mu_s[i], b.mu_s[i]);
+    }
   Scene wide;
   wide.friction = {0.2, 0.5, 0.6, 0.5};  // many negative draws and many mu_d > mu_s
   auto c = build_chain(wide, 0);

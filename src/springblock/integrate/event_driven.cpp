@@ -53,6 +53,14 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     quiet->set_sample_dt(sample_dt);
   }
   State sample = s;  // buffer for samples served from the exact quiet-phase solution
+  // Everything but the kinematics that an observer reads from a sample: the work counters and
+  // how many contact blocks have slid (the all-slipped end of loading). A stale count there
+  // once deferred the end of loading to the next active phase that happened to hold a sample,
+  // so mu_s depended on the sample spacing (test FirstPeak.EndOfLoadingDoesNotDependOnSampleSpacing).
+  auto stamp_sample = [&] {
+    sample.steps = s.steps, sample.rhs_evals = s.rhs_evals, sample.switches = s.switches;
+    sample.n_slipped_once = s.n_slipped_once;
+  };
   std::vector<double> fa(N), fb(N);  // affine contact forces a + b t once a quiet phase's modes died
   // An observer that reads only contact blocks' forces needs the groove segments' end rows at
   // quiet-phase samples (O(N) per sample instead of O(sum n^2) for long grooves).
@@ -124,7 +132,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
           // Samples k dt < next.t, counted exactly as the clock will produce them.
           const long long k_end = event_detail::first_sample_at_or_after(next.t, sample_dt, clock.k);
           sample.t = clock.next();
-          sample.steps = s.steps, sample.rhs_evals = s.rhs_evals, sample.switches = s.switches;
+          stamp_sample();
           const long used = obs.sample_affine(c, sample, static_cast<long>(clock.k), sample_dt,
                                               static_cast<long>(k_end - clock.k), fa.data(), fb.data());
           if (used > 0) {
@@ -140,7 +148,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
         }
         sample.t = clock.next();
         quiet->sample(sample.t, sample.u.data(), sample.v.data(), ends_only);
-        sample.steps = s.steps, sample.rhs_evals = s.rhs_evals, sample.switches = s.switches;
+        stamp_sample();
         obs.sample(c, sample);
         ++clock.k;
         if (obs.wants_stop()) {
