@@ -214,6 +214,9 @@ int main(int argc, char** argv) {
   auto* pattern_cmd = app.add_subcommand("pattern", "print a surface's contact mask (1 = pawl, 0 = groove) and S/S_tot");
   pattern_cmd->add_option("--N", pattern_N, "number of blocks")->check(CLI::Range(1, 1000000));
   pattern_cmd->add_option("--pattern", pattern_spec, "smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION");
+  std::string pattern_layout = sb::PatternSpec{}.layout_text();
+  pattern_cmd->add_option("--layout", pattern_layout, "pawl_first | symmetric | groove_first | one_based (per level, comma separated)")
+      ->default_str(pattern_layout);
   bool theory_json = false;
   auto* theory = app.add_subcommand("theory", "closed-form single-block predictions (K_int = 0 limit)");
   theory_fields.add_to(theory);
@@ -233,7 +236,9 @@ int main(int argc, char** argv) {
     if (run->parsed())
       return cmd_run(run_fields, run, scene_file, json, out_path, series_path, progress, join_args(argc, argv));
     if (pattern_cmd->parsed()) {
-      auto mask = sb::build_contact_mask(sb::parse_pattern(pattern_spec), pattern_N, 1);
+      auto spec = sb::parse_pattern(pattern_spec);
+      spec.layout = sb::parse_layout(pattern_layout);
+      auto mask = sb::build_contact_mask(spec, pattern_N, 1);
       for (auto m : mask) std::putchar(m ? '1' : '0');
       std::printf("\n%.17g\n", sb::contact_fraction(mask));
       return 0;

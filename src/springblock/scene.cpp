@@ -244,6 +244,7 @@ void to_json(nlohmann::json& j, const Scene& s) {
                      {"friction", s.friction},
                      {"k_int_scale", s.k_int_scale},
                      {"pattern", s.pattern.text()},
+                     {"layout", s.pattern.layout_text()},
                      {"derived", s.derived()},
                      {"method", method_name(s.run.method)},
                      {"dt_s", s.run.dt_s},

@@ -51,7 +51,16 @@ const std::vector<Entry>& entries() {
        [](Scene& s, auto& k, auto& v) { s.geometry.L_x_m = parse_quantity(v, Dimension::Length, k); }},
       {{"pattern", "surface: smooth (default) | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION",
         "periodic:2,1"},
-       [](Scene& s, auto&, auto& v) { s.pattern = parse_pattern(v); }},
+       [](Scene& s, auto&, auto& v) {
+         const auto layout = s.pattern.layout;  // a separate field: keep it whatever the order
+         s.pattern = parse_pattern(v);
+         s.pattern.layout = layout;
+       }},
+      {{"layout",
+        "where each level's pawls and grooves sit on the run they divide: pawl_first (default), symmetric, "
+        "groove_first or one_based; a comma list gives one per level, the last for deeper levels",
+        "symmetric"},
+       [](Scene& s, auto&, auto& v) { s.pattern.layout = parse_layout(v); }},
       {{"mu_s", "micro static coefficient MEAN,SD (default 1.0,0.1)", "1.0,0.1"},
        [](Scene& s, auto& k, auto& v) {
          std::tie(s.friction.mu_s_mean, s.friction.mu_s_sd) = mean_sd(k, v);
@@ -106,7 +115,7 @@ const std::vector<Entry>& entries() {
        [](Scene& s, auto&, auto& v) { s.run.method = parse_method(v); }},
       {{"dt", "RK4 step h (default 1e-4ms; s, ms, us)", "1e-4ms"},
        [](Scene& s, auto& k, auto& v) { s.run.dt_s = parse_quantity(v, Dimension::Time, k); }},
-      {{"tol", "event method relative tolerance (default 1e-9)", "1e-9"},
+      {{"tol", "event method relative tolerance (default 1e-8)", "1e-8"},
        [](Scene& s, auto& k, auto& v) { s.run.tol = number(k, v); }},
       {{"modal_max_run", "event method: mobile runs of up to this many blocks are solved exactly by their modes, not stepped (default 2; 0 steps all)", "2"},
        [](Scene& s, auto& k, auto& v) {

@@ -1,5 +1,6 @@
 #include "springblock/surface.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -43,7 +44,8 @@ std::vector<std::string_view> split(std::string_view s, char sep) {
 }
 
 int parse_size(std::string_view tok, const std::string& spec) {
-  const std::string quoted = "'" + std::string(tok) + "' in '" + spec + "'";
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) on "'" + std::string(...).
+  const std::string quoted = std::string("'").append(tok).append("' in '").append(spec).append("'");
   if (tok.empty()) fail("missing number in '" + spec + "'");
   // from_chars on an int stops at '.', so "2.5" is caught as trailing text below, giving a
   // clear "not an integer" instead of silently truncating to 2.
@@ -69,12 +71,44 @@ std::uint64_t bounded_draw(std::mt19937_64& rng, std::uint64_t bound) {
   }
 }
 
-// Marks blocks [begin, end) as alternating runs of `size` pawl / `size` groove, pawl first.
+// The phase of an alternation of `pawl` / `groove` blocks on a run of L blocks (see Layout).
+int layout_phase(Layout rule, int pawl, int groove, int L) {
+  const int period = pawl + groove;
+  switch (rule) {
+    case Layout::PawlFirst: return 0;
+    case Layout::GrooveFirst: return pawl % period;
+    case Layout::OneBased: return 1 % period;
+    case Layout::Symmetric: break;
+  }
+  // The phase whose run is closest to its own mirror image; on a tie one that starts with a
+  // pawl, then the smallest phase. Runs are at most N long and periods at most N: O(N^2) per
+  // level at worst, done once per scene and repetition.
+  int best = 0;
+  long best_asym = -1;
+  bool best_pawl = false;
+  for (int ph = 0; ph < period; ++ph) {
+    auto pawl_at = [&](int j) { return ((j + ph) % period) < pawl; };
+    long asym = 0;
+    for (int j = 0; j < L / 2; ++j) asym += pawl_at(j) != pawl_at(L - 1 - j);
+    const bool starts_pawl = pawl_at(0);
+    if (best_asym < 0 || asym < best_asym || (asym == best_asym && starts_pawl && !best_pawl)) {
+      best = ph, best_asym = asym, best_pawl = starts_pawl;
+    }
+  }
+  return best;
+}
+
+// Marks blocks [begin, end) as alternating runs of `pawl` / `groove` blocks placed by `rule`.
 // Used both for level 1 (over the whole surface) and for every later level (over each
 // surviving pawl run), which is what makes the pattern self-similar.
-void alternate(std::vector<std::uint8_t>& mask, int begin, int end, int pawl, int groove) {
+void alternate(std::vector<std::uint8_t>& mask, int begin, int end, int pawl, int groove, Layout rule) {
   const int period = pawl + groove;
-  for (int i = begin; i < end; ++i) mask[i] = ((i - begin) % period) < pawl ? 1 : 0;
+  const int phase = layout_phase(rule, pawl, groove, end - begin);
+  for (int i = begin; i < end; ++i) mask[i] = ((i - begin + phase) % period) < pawl ? 1 : 0;
+}
+
+Layout layout_at(const PatternSpec& spec, std::size_t level) {
+  return spec.layout.empty() ? Layout::PawlFirst : spec.layout[std::min(level, spec.layout.size() - 1)];
 }
 
 void validate(const PatternSpec& spec) {
@@ -126,6 +160,43 @@ std::string PatternSpec::text() const {
     }
   }
   return "?";
+}
+
+std::string layout_name(Layout l) {
+  switch (l) {
+    case Layout::PawlFirst: return "pawl_first";
+    case Layout::Symmetric: return "symmetric";
+    case Layout::GrooveFirst: return "groove_first";
+    case Layout::OneBased: return "one_based";
+  }
+  return "?";
+}
+
+std::string PatternSpec::layout_text() const {
+  std::string s;
+  for (std::size_t i = 0; i < layout.size(); ++i) {
+    if (i) s += ',';
+    s += layout_name(layout[i]);
+  }
+  return s;
+}
+
+std::vector<Layout> parse_layout(const std::string& text) {
+  std::vector<Layout> out;
+  for (auto tok : split(text, ',')) {
+    bool found = false;
+    for (Layout l : {Layout::PawlFirst, Layout::Symmetric, Layout::GrooveFirst, Layout::OneBased})
+      if (tok == layout_name(l)) out.push_back(l), found = true;
+    if (!found) {
+      std::string what = "'";
+      what.append(tok).append("' in '").append(text).append(
+          "' is not one of: pawl_first, symmetric, groove_first, one_based (one per level, comma separated; "
+          "the last holds for deeper levels)");
+      throw InputError("layout", what);
+    }
+  }
+  if (out.size() > kMaxLevels) throw InputError("layout", std::string("at most 8 levels, got '").append(text).append("'"));
+  return out;
 }
 
 PatternSpec parse_pattern(const std::string& spec) {
@@ -198,12 +269,12 @@ std::vector<std::uint8_t> build_contact_mask(const PatternSpec& spec, int N, std
     case SurfaceKind::Periodic:
       if (spec.n_p > N) too_big(spec.n_p);
       if (spec.n_g > N) too_big(spec.n_g);
-      alternate(mask, 0, N, spec.n_p, spec.n_g);
+      alternate(mask, 0, N, spec.n_p, spec.n_g, layout_at(spec, 0));
       break;
     case SurfaceKind::Hierarchical: {
       for (int g : spec.levels)
         if (g > N) too_big(g);
-      alternate(mask, 0, N, spec.levels[0], spec.levels[0]);
+      alternate(mask, 0, N, spec.levels[0], spec.levels[0], layout_at(spec, 0));
       for (std::size_t k = 1; k < spec.levels.size(); ++k) {
         const int g = spec.levels[k];
         // Find each maximal pawl run left by the previous levels and subdivide it in place.
@@ -216,7 +287,7 @@ std::vector<std::uint8_t> build_contact_mask(const PatternSpec& spec, int N, std
           }
           int j = i;
           while (j < N && mask[j]) ++j;
-          alternate(mask, i, j, g, g);
+          alternate(mask, i, j, g, g, layout_at(spec, k));
           i = j;
         }
       }

@@ -10,19 +10,38 @@ namespace sb {
 
 enum class SurfaceKind { Smooth, Periodic, Hierarchical, Random };
 
+// Where a level's alternation of pawls and grooves sits on the run of blocks it divides (the
+// whole chain at level 1, each pawl left by the level above deeper down). The paper does not say;
+// paper/choices.md ("Pattern layout") has the study that chose the default. With p pawl and g
+// groove blocks, block j of a run of L is a pawl iff (j + phase) mod (p + g) < p, where the phase is
+//   PawlFirst:   0, the run starts with a whole pawl;
+//   GrooveFirst: p, it starts with a whole groove;
+//   OneBased:    1, the pawl test on blocks numbered from 1 (a pawl of p shifted one block left);
+//   Symmetric:   the run is the mirror image of itself, with pawl pieces at both ends where that
+//                is possible (else the least asymmetric placement, a pawl first).
+enum class Layout { PawlFirst, Symmetric, GrooveFirst, OneBased };
+std::string layout_name(Layout l);
+
 // Parsed pattern specification (the --pattern option):
 //   smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION
+// and its layout (the --layout option): one rule per level, level 1 first; the last one holds
+// for every deeper level.
 struct PatternSpec {
   SurfaceKind kind = SurfaceKind::Smooth;
   int n_p = 0, n_g = 0;            // periodic
   std::vector<int> levels;         // hierarchical groove sizes, largest first
   double groove_fraction = 0.0;    // random: fraction of blocks in grooves
-  std::string text() const;        // canonical spec string, e.g. "periodic:2,1"
+  std::vector<Layout> layout = {Layout::PawlFirst};
+  std::string text() const;        // canonical spec string, e.g. "periodic:2,1" (without the layout)
+  std::string layout_text() const; // e.g. "symmetric" or "symmetric,pawl_first"
 };
 
 // Throws InputError(field="pattern") with the accepted grammar on any malformed spec,
 // non-positive sizes, or fraction outside [0,1).
 PatternSpec parse_pattern(const std::string& spec);
+// "pawl_first", "symmetric", "groove_first", "one_based", or a comma list of them per level.
+// Throws InputError(field="layout").
+std::vector<Layout> parse_layout(const std::string& text);
 
 // 1 = in contact, 0 = groove. Deterministic for all kinds except Random, which draws
 // round(fraction*N) groove blocks without replacement from `seed`.
