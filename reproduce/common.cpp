@@ -89,6 +89,7 @@ nlohmann::json num(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlo
 nlohmann::json scene_record(const LabelledScene& ls, const sb::EnsembleResult& r, const std::string& cmd) {
   nlohmann::json result = sb::ensemble_json(ls.scene, r, cmd);
   result.erase("provenance");  // the document carries one provenance block
+  if (!ls.keep_runs) result.erase("runs");
   nlohmann::json rec = {{"id", ls.id}, {"label", ls.label}, {"x", ls.x}, {"result", result}};
   if (ls.scene.pattern.kind != sb::SurfaceKind::Random) rec["contact_mask"] = mask_text(ls.scene);
   if (r.runs.empty()) return rec;
@@ -111,12 +112,6 @@ nlohmann::json scene_record(const LabelledScene& ls, const sb::EnsembleResult& r
   return rec;
 }
 
-// Seed of one scene: FNV-1a of its id folded into the run's seed, mixed once more.
-std::uint64_t scene_seed(std::uint64_t seed, const std::string& id) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : id) h = (h ^ c) * 1099511628211ULL;
-  return sb::rep_seed(seed ^ h, 0) >> 1;  // keep it printable as a signed 64-bit integer
-}
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
@@ -133,6 +128,13 @@ const std::vector<Tier>& tiers() {
   return all;
 }
 
+// Seed of one scene: FNV-1a of its id folded into the run's seed, mixed once more.
+std::uint64_t scene_seed(std::uint64_t seed, const std::string& id) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : id) h = (h ^ c) * 1099511628211ULL;
+  return sb::rep_seed(seed ^ h, 0) >> 1;  // keep it printable as a signed 64-bit integer
+}
+
 Tier tier_named(const std::string& name) {
   for (const auto& t : tiers())
     if (t.name == name) return t;
@@ -146,6 +148,8 @@ sb::Scene Context::base_scene() const {
   s.run.duration_t0 = tier.duration_t0;
   s.seed = opt.seed;
   s.threads = opt.threads;
+  // Before any pattern is set: the pattern field keeps the layout it finds.
+  if (!opt.layout.empty()) s.pattern.layout = sb::parse_layout(opt.layout);
   return s;
 }
 
@@ -298,6 +302,9 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
   app.add_option("--table", opt.table, "published table TSV this target reproduces");
   app.add_option("--input", opt.inputs, "JSON of another target this one reads")->check(CLI::ExistingFile);
   app.add_option("--only", opt.only, "comma-separated scene ids to run (a subset, for debugging)");
+  app.add_option("--layout", opt.layout,
+                 "pattern layout of every scene (pawl_first, symmetric, groove_first, one_based; per level, comma "
+                 "separated; default: the library's, see paper/choices.md)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -398,6 +405,7 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
                           {"tier_reps", tier_reps_json()},
                           {"duration_t0", t.duration_t0},
                           {"seed", opt.seed},
+                          {"layout", ctx.base_scene().pattern.layout_text()},
                           {"provenance", sb::provenance(opt.command_line)},
                           {"scenes", records}};
     if (finish) finish(Context(opt, tier, method), doc);

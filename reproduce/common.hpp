@@ -43,6 +43,7 @@ struct Options {
   std::string table;                // published_tab_pat*.tsv (table drivers)
   std::vector<std::string> inputs;  // other targets' JSON (derived figures)
   std::string only;                 // comma-separated scene ids to keep (debugging a subset)
+  std::string layout;               // pattern layout for every scene (empty: the library's default)
   std::string command_line;
 };
 
@@ -56,6 +57,9 @@ struct LabelledScene {
   // compares variants of one scene sets this to keep --seed for all of them: the variants then
   // see the same micro coefficients and their differences are paired.
   bool shared_seed = false;
+  // The per-repetition records in the document (result.runs). A study that only needs each
+  // scene's statistics drops them to keep its committed document small.
+  bool keep_runs = true;
   // Borrowed scenes are not simulated here: their result is another target's record (given with
   // --input) of the same simulation, found with find_borrowable(). With trace set, repetition 0
   // is simulated once more with the source's seed to keep its mu(t) series, and must give the
@@ -77,6 +81,10 @@ class Context {
   const Tier tier;
   const sb::Method method;  // after the event -> rk4 fallback
 };
+
+// The seed a scene with this id gets from --seed (a driver that pairs its scenes with another
+// target's uses the other scene's id).
+std::uint64_t scene_seed(std::uint64_t seed, const std::string& id);
 
 // Set scene fields through the library's field table, so units and checks stay in one place.
 void set(sb::Scene& s, const std::string& key, const std::string& value);

@@ -2,14 +2,25 @@
 
 #include <fmt/format.h>
 
+#include <sstream>
+#include <string>
+
 #include "springblock/units.hpp"
 
 namespace repro {
 
-std::vector<LabelledScene> table_scenes(const Context& ctx) {
+std::vector<TableRow> table_rows(const Context& ctx) {
   if (ctx.opt.table.empty()) throw sb::InputError("table", "this target needs --table published_tab_patN.tsv");
+  std::vector<TableRow> rows;
+  std::stringstream list(ctx.opt.table);
+  for (std::string path; std::getline(list, path, ',');)
+    for (auto& r : read_table(path)) rows.push_back(std::move(r));
+  return rows;
+}
+
+std::vector<LabelledScene> table_scenes(const Context& ctx) {
   std::vector<LabelledScene> out;
-  for (const auto& row : read_table(ctx.opt.table)) {
+  for (const auto& row : table_rows(ctx)) {
     LabelledScene s;
     s.id = row.row_id;
     s.label = row.pattern;

@@ -7,6 +7,9 @@
 
 namespace repro {
 
+// The rows of --table, which may list several TSV files separated by commas (the studies read
+// all three appendix tables).
+std::vector<TableRow> table_rows(const Context& ctx);
 std::vector<LabelledScene> table_scenes(const Context& ctx);
 
 }  // namespace repro

@@ -62,6 +62,7 @@ RunResult observed(const FrictionObserver& obs, const Chain& chain, int rep) {
   r.rep = rep;
   r.slipped = obs.slipped();
   r.mu_s = obs.mu_s();
+  r.mu_s_signed = obs.mu_s_signed();
   r.max_mu = obs.max_mu();
   r.t_peak_s = obs.t_peak();
   r.t_slip_s = obs.t_slip();
@@ -149,14 +150,16 @@ std::string trajectory_key(const Scene& s) {
 
 // The per-scene statistics from its repetitions.
 void summarize_runs(EnsembleResult& out) {
-  std::vector<double> ms, md, mds, tp;
+  std::vector<double> ms, mss, md, mds, tp;
   for (auto& r : out.runs) {
     ms.push_back(r.mu_s);
+    mss.push_back(r.mu_s_signed);
     md.push_back(r.mu_d);
     mds.push_back(r.mu_d_signed);
     tp.push_back(r.t_peak_s);
   }
   out.mu_s = summarize(ms);
+  out.mu_s_signed = summarize(mss);
   out.mu_d = summarize(md);
   out.mu_d_signed = summarize(mds);
   out.t_peak_s = summarize(tp);
@@ -302,6 +305,7 @@ void to_json(nlohmann::json& j, const Statistic& s) {
 void to_json(nlohmann::json& j, const RunResult& r) {
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   j = {{"rep", r.rep},           {"slipped", r.slipped},     {"mu_s", num(r.mu_s)},
+       {"mu_s_signed", num(r.mu_s_signed)},
        {"t_peak_s", r.t_peak_s}, {"t_slip_s", num(r.t_slip_s)}, {"max_mu", r.max_mu},
        {"mu_d", num(r.mu_d)},    {"mu_d_signed", num(r.mu_d_signed)},
        {"window_samples", r.window_samples}, {"steps", r.steps}, {"rhs_evals", r.rhs_evals},

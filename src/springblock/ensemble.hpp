@@ -17,7 +17,7 @@ namespace sb {
 struct RunResult {
   int rep = 0;
   bool slipped = false;  // a first macroscopic slip was found before the end of the run
-  double mu_s = 0, t_peak_s = 0, t_slip_s = 0, max_mu = 0;
+  double mu_s = 0, mu_s_signed = 0, t_peak_s = 0, t_slip_s = 0, max_mu = 0;
   double mu_d = 0, mu_d_signed = 0;
   std::int64_t window_samples = 0;
   std::int64_t steps = 0, rhs_evals = 0, switches = 0;
@@ -36,7 +36,7 @@ Statistic summarize(const std::vector<double>& values);
 
 struct EnsembleResult {
   std::vector<RunResult> runs;
-  Statistic mu_s, mu_d, mu_d_signed, t_peak_s;
+  Statistic mu_s, mu_s_signed, mu_d, mu_d_signed, t_peak_s;
   double contact_fraction = 0;
   double wall_s = 0;
   int threads = 1;

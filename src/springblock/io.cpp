@@ -97,6 +97,7 @@ nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const 
     return j;
   };
   return {{"mu_s", stat(r.mu_s, "mu_s")},
+          {"mu_s_signed", stat(r.mu_s_signed, "mu_s")},
           {"mu_d", stat(r.mu_d, "mu_d")},
           {"mu_d_signed", stat(r.mu_d_signed, "mu_d")},
           {"t_peak_s", r.t_peak_s},

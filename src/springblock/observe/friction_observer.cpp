@@ -39,6 +39,7 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
       running_max_ = mu;
       t_max_ = s.t;
     }
+    running_max_signed_ = std::max(running_max_signed_, mu_signed);
     // End of the loading phase: mu_s is the peak reached before it.
     const bool ended = cfg_.peak_rule == ExtractionRules::PeakRule::AllSlipped
                            ? !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact
@@ -109,6 +110,8 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
     const double first = mu(k0), last = mu(k0 + take - 1);
     if (first > running_max_) running_max_ = first, t_max_ = t_of(k0);
     if (last > running_max_) running_max_ = last, t_max_ = t_of(k0 + take - 1);
+    auto mu_signed = [&](long k) { return (As + Bs * t_of(k)) * inv; };
+    running_max_signed_ = std::max({running_max_signed_, mu_signed(k0), mu_signed(k0 + take - 1)});
     last_t_ = t_of(k0 + take - 1);
     if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
     return take;

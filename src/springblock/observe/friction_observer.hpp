@@ -58,6 +58,9 @@ class FrictionObserver final : public Observer {
   bool slipped() const { return slipped_; }
   double mu_s() const { return slipped_ ? running_max_ : std::numeric_limits<double>::quiet_NaN(); }
   double max_mu() const { return running_max_; }
+  // The same peak of the signed friction sum (the other reading of the paper's "sum of all the
+  // friction forces", paper/choices.md): recorded beside mu_s to measure what the choice is worth.
+  double mu_s_signed() const { return slipped_ ? running_max_signed_ : std::numeric_limits<double>::quiet_NaN(); }
   double t_peak() const { return t_max_; }
   double t_slip() const { return t_slip_; }
   double mu_d() const { return n_window_ ? sum_mu_ / n_window_ : std::numeric_limits<double>::quiet_NaN(); }
@@ -72,6 +75,7 @@ class FrictionObserver final : public Observer {
  private:
   FrictionObserverConfig cfg_;
   double running_max_ = -1, t_max_ = 0, t_slip_ = std::numeric_limits<double>::quiet_NaN();
+  double running_max_signed_ = -std::numeric_limits<double>::infinity();
   bool slipped_ = false;
   double sum_mu_ = 0, sum_mu_signed_ = 0;
   std::int64_t n_window_ = 0;
