@@ -44,7 +44,12 @@ set(SB_FIG_INPUTS_fig_p3 fig_p3)
 set(SB_FIG_INPUTS_sensitivity sensitivity)
 set(SB_FIG_INPUTS_accuracy_cost accuracy_cost)
 set(SB_FIG_INPUTS_schematics "")
-set(SB_FIGURES fig1 fig_s1 fig_s2 fig2 fig_p1 fig3 fig4 fig5 fig_p2 fig_p3 sensitivity accuracy_cost schematics)
+# figure name -> optional studies it draws (make studies; read from the build tree if run there,
+# else from the committed paper/data/<study>.json, which is what the file dependency watches).
+set(SB_FIG_STUDIES_accuracy_cost rk4_refinement)
+set(SB_FIG_STUDIES_layout layout)
+set(SB_FIG_INPUTS_layout "")
+set(SB_FIGURES fig1 fig_s1 fig_s2 fig2 fig_p1 fig3 fig4 fig5 fig_p2 fig_p3 sensitivity accuracy_cost schematics layout)
 
 set(SB_FIG_PNGS "")
 set(SB_FIG_DATA_TARGETS "")
@@ -56,6 +61,11 @@ foreach(fig ${SB_FIGURES})
     if(TARGET reproduce_${in})
       list(APPEND json_deps ${SB_REPRO_DIR}/${in}/${in}.json)
       list(APPEND SB_FIG_DATA_TARGETS reproduce_${in})
+    endif()
+  endforeach()
+  foreach(st ${SB_FIG_STUDIES_${fig}})
+    if(EXISTS ${CMAKE_SOURCE_DIR}/paper/data/${st}.json)
+      list(APPEND json_deps ${CMAKE_SOURCE_DIR}/paper/data/${st}.json)
     endif()
   endforeach()
   set(png ${SB_FIG_OUT}/${fig}.png)
@@ -95,7 +105,8 @@ add_custom_target(report
           --data ${SB_REPRO_DIR} --out ${SB_PAPER_OUT}/tables
   COMMAND ${SB_PY} ${CMAKE_SOURCE_DIR}/paper/build_report.py
           --data ${SB_REPRO_DIR} --figures ${SB_FIG_OUT} --out ${SB_PAPER_OUT}
-  DEPENDS ${SB_FIG_PNGS} ${CMAKE_SOURCE_DIR}/paper/build_report.py ${CMAKE_SOURCE_DIR}/paper/choices.md
+  DEPENDS ${SB_FIG_PNGS} ${CMAKE_SOURCE_DIR}/paper/build_report.py ${CMAKE_SOURCE_DIR}/paper/report_studies.py
+          ${CMAKE_SOURCE_DIR}/paper/choices.md
           ${CMAKE_SOURCE_DIR}/tables/render_tables.py ${CMAKE_SOURCE_DIR}/tools/summary_schema.py
   COMMENT "Reproduction report: ${SB_PAPER_OUT}/report.html"
   VERBATIM)

@@ -33,6 +33,9 @@ sys.path.insert(0, str(REPO / "tools"))
 import render_tables  # noqa: E402
 import summary_schema as schema  # noqa: E402
 
+sys.path.insert(0, str(REPO / "paper"))
+import report_studies  # noqa: E402
+
 # Paper order: the model schematic, section II figures, section III figures, then the tables.
 ORDER = ["schematics", "fig1", "fig_s1", "fig_s2", "fig2", "fig_p1", "fig3", "fig4", "fig5",
          "fig_p2", "fig_p3", "tab_pat0", "tab_pat1", "tab_pat2"]
@@ -300,7 +303,33 @@ def z_blocks(s, figs):
               ["standard normal", *(f"{z['normal'][c]:.3f}" for c in cuts)]]),
             ("p", f"Sample standard deviation of z: {z['sd']:.2f} (1 for a standard normal; mu_s alone "
                   f"{z['sd_by_coef']['mu_s']:.2f}, mu_d alone {z['sd_by_coef']['mu_d']:.2f}); mean {z['mean']:+.2f}. "
-                  "If the published errors and ours were the whole story, z would follow the standard normal.")]
+                  "If the published errors and ours were the whole story, z would follow the standard normal."),
+            ("p", "Where the spread comes from: the mean difference ours − paper by pattern family (levels of "
+                  "patterning; a systematic offset shows as a mean away from zero)."),
+            ("table", ["coefficient", "family", "rows", "mean ours − paper", "mean z"], family_rows(s))]
+
+
+def family_rows(s):
+    """Mean difference and mean z of the judged numbers per coefficient and number of levels."""
+    pub = {}
+    for t in render_tables.TABLES:
+        for r in read_tsv(REPO / "tables" / f"published_{t}.tsv"):
+            pub[r["row_id"]] = r["pattern"]
+
+    def family(pattern):
+        if pattern == "smooth":
+            return "smooth"
+        if pattern.startswith("periodic"):
+            return "one level"
+        n = len(pattern.split(":")[1].split(","))
+        return {1: "one level", 2: "two levels", 3: "three levels"}[n]
+    groups = {}
+    for r in s["rows"]:
+        if r["z"] is not None:
+            groups.setdefault((r["coef"], family(pub[r["row_id"]])), []).append(r)
+    order = ["smooth", "one level", "two levels", "three levels"]
+    return [[coef, fam, len(g), f"{sum(r['d'] for r in g) / len(g):+.4f}", f"{sum(r['z'] for r in g) / len(g):+.2f}"]
+            for coef in ("mu_s", "mu_d") for fam in order if (g := groups.get((coef, fam)))]
 
 
 def summary_blocks(s, docs, figs):
@@ -490,6 +519,8 @@ def build(data, figs, s):
         B.append(figure_block(figs, "accuracy_cost"))
         B.append(("table", ["study", "setting", "error against the reference", "wall s", "rhs evaluations"],
                   accuracy_rows(docs["accuracy_cost"])))
+
+    B += report_studies.study_blocks(data, figs)
 
     B.append(("h", 2, "Known deviations"))
     kd = read_tsv(REPO / "tables" / "known_deviations.tsv")
