@@ -57,8 +57,8 @@ const std::vector<Entry>& entries() {
          s.pattern.layout = layout;
        }},
       {{"layout",
-        "where each level's pawls and grooves sit on the run they divide: pawl_first (default), symmetric, "
-        "groove_first or one_based; a comma list gives one per level, the last for deeper levels",
+        "where each level's pawls and grooves sit on the run they divide: pawl_first, symmetric, groove_first "
+        "or one_based; a comma list gives one per level, the last for deeper levels (default symmetric,pawl_first)",
         "symmetric"},
        [](Scene& s, auto&, auto& v) { s.pattern.layout = parse_layout(v); }},
       {{"mu_s", "micro static coefficient MEAN,SD (default 1.0,0.1)", "1.0,0.1"},

@@ -17,8 +17,8 @@ enum class SurfaceKind { Smooth, Periodic, Hierarchical, Random };
 //   PawlFirst:   0, the run starts with a whole pawl;
 //   GrooveFirst: p, it starts with a whole groove;
 //   OneBased:    1, the pawl test on blocks numbered from 1 (a pawl of p shifted one block left);
-//   Symmetric:   the run is the mirror image of itself, with pawl pieces at both ends where that
-//                is possible (else the least asymmetric placement, a pawl first).
+//   Symmetric:   the run is its own mirror image; of two such placements the one with pawl
+//                pieces at both ends (else the least asymmetric placement, a pawl first).
 enum class Layout { PawlFirst, Symmetric, GrooveFirst, OneBased };
 std::string layout_name(Layout l);
 
@@ -31,7 +31,9 @@ struct PatternSpec {
   int n_p = 0, n_g = 0;            // periodic
   std::vector<int> levels;         // hierarchical groove sizes, largest first
   double groove_fraction = 0.0;    // random: fraction of blocks in grooves
-  std::vector<Layout> layout = {Layout::PawlFirst};
+  // The default is the layout study's choice (paper/choices.md, "Pattern layout"): level 1
+  // symmetric on the chain, every deeper level pawl first on the pawls above it.
+  std::vector<Layout> layout = {Layout::Symmetric, Layout::PawlFirst};
   std::string text() const;        // canonical spec string, e.g. "periodic:2,1" (without the layout)
   std::string layout_text() const; // e.g. "symmetric" or "symmetric,pawl_first"
 };
