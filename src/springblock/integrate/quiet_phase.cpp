@@ -41,8 +41,9 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int) {
         if (r + 1 < s.n) K(r, r + 1) = K(r + 1, r) = -c.K_int;
       }
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K);
-      Decomp d{es.eigenvectors(), es.eigenvalues(), {}, {}, {}, {}, {}};
+      Decomp d{es.eigenvectors(), es.eigenvalues(), {}, {}, {}, {}, {}, {}, {}};
       for (int k = 0; k < s.n; ++k) d.modes.push_back({0.5 * c.gamma, d.lambda[k] / c.m});
+      for (int k = 0; k < s.n; ++k) d.first_row.push_back(d.Q(0, k)), d.last_row.push_back(d.Q(s.n - 1, k));
       decomps_.push_back(std::move(d));
       it = cache_.emplace(key, static_cast<int>(decomps_.size()) - 1).first;
     }
@@ -202,9 +203,14 @@ void QuietPhase::row_to_physical(const Segment& s, int r, double t, const double
                                  double* u, double* v) const {
   const Decomp& d = decomps_[s.decomp];
   double du = 0, dv = 0;
-  for (int k = 0; q != nullptr && k < s.n; ++k) {
-    du += d.Q(r, k) * q[k];
-    dv += d.Q(r, k) * qd[k];
+  if (q != nullptr) {
+    // The same products summed in the same order as Q(r, k) would give, from a contiguous copy.
+    const double* row = r == 0 ? d.first_row.data() : r == s.n - 1 ? d.last_row.data() : nullptr;
+    for (int k = 0; k < s.n; ++k) {
+      const double Qrk = row ? row[k] : d.Q(r, k);
+      du += Qrk * q[k];
+      dv += Qrk * qd[k];
+    }
   }
   if (q == nullptr) du = dv = 0;
   u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t + du;

@@ -81,6 +81,9 @@ class QuietPhase {
     Eigen::VectorXd lambda;
     std::vector<DampedMode> modes;
     std::vector<double> s00, s01, s10, s11;  // per mode: transition over the sample spacing
+    // Q's first and last rows, contiguous: a sample of a contact-force observer reads only the
+    // groove's end rows, and Q is stored by column (a row is strided by n).
+    std::vector<double> first_row, last_row;
   };
   struct Segment {
     int first, n, decomp, offset;  // offset into the flat per-phase arrays
