@@ -105,9 +105,25 @@ def modal_groove_table(rows):
                           f"mu_d {r.get('mu_d', float('nan')):.5f}")
 
 
+def reproduction_table(path):
+    """Where a reproduction's time goes: loading phase against the whole run, and the time per
+    stick/slip switch (bench_reproduction.cpp)."""
+    rows = {name.split("/iterations:")[0]: c for name, c in medians(path).items()}
+    print("\nOne repetition of the paper tier's scenes, seed 3 (median wall time); cost = switches x time per switch")
+    print(f"{'scene':16s}{'loading':>10s}{'whole run':>11s}{'simulated':>11s}{'switches':>10s}{'us/switch':>11s}")
+    for name in sorted({n.split("/")[1] for n in rows}):
+        load, run = rows.get(f"reproduction/{name}/loading"), rows.get(f"reproduction/{name}/run")
+        if not (load and run):
+            continue
+        print(f"{name:16s}{load['real_time']:8.1f}ms{run['real_time']:9.1f}ms{run['simulated_s']:9.2f} s"
+              f"{run['switches']:10.0f}{1e6 * run['s_per_switch']:11.2f}")
+
+
 if __name__ == "__main__":
     kernel_table(sys.argv[1])
     if len(sys.argv) > 2:
         ensemble_table(sys.argv[2])
     if len(sys.argv) > 3:
         methods_table(sys.argv[3])
+    if len(sys.argv) > 4:
+        reproduction_table(sys.argv[4])

@@ -292,7 +292,7 @@ def resolution_blocks(s):
     return [("h", 3, "What each tier can resolve"), ("p", text), ("table", head, rows)]
 
 
-def z_blocks(s, figs):
+def z_blocks(s, figs, data):
     z = s["z_distribution"]
     cuts = schema.Z_CUTS
     return [("h", 3, "How the z-scores spread"),
@@ -306,7 +306,21 @@ def z_blocks(s, figs):
                   "If the published errors and ours were the whole story, z would follow the standard normal."),
             ("p", "Where the spread comes from: the mean difference ours − paper by pattern family (levels of "
                   "patterning; a systematic offset shows as a mean away from zero)."),
-            ("table", ["coefficient", "family", "rows", "mean ours − paper", "mean z"], family_rows(s))]
+            ("table", ["coefficient", "family", "rows", "mean ours − paper", "mean z"], family_rows(s))] + \
+        layout_z_blocks(data)
+
+
+def layout_z_blocks(data):
+    """Whether any admissible pattern layout brings the z-scores closer to normal (the layout study)."""
+    doc, _ = report_studies.load_study(data, "layout")
+    if doc is None:
+        return []
+    ok = [v for v in doc["variants"] if v["S_matches_counted"] == v["S_counted_rows"]]
+    best = max(ok, key=lambda v: v["z_distribution"]["within"]["2"])
+    return [("p", f"Across the {len(ok)} admissible layouts of the layout study (Optional studies), the largest "
+                  f"fraction of z within ±2 is {best['z_distribution']['within']['2']:.3f} ({best['variant']}; "
+                  f"{doc['chosen']} is the one the criterion chose): the spread is not a matter of where the "
+                  "pawls sit.")]
 
 
 def family_rows(s):
@@ -332,7 +346,7 @@ def family_rows(s):
             for coef in ("mu_s", "mu_d") for fam in order if (g := groups.get((coef, fam)))]
 
 
-def summary_blocks(s, docs, figs):
+def summary_blocks(s, docs, figs, data):
     c = s["counts"]
     B = [("h", 2, "Summary"),
          ("p", f"Tier **{s['tier']}** ({s['tier_reps'][s['tier']]} repetitions per scene). Every published number "
@@ -347,7 +361,7 @@ def summary_blocks(s, docs, figs):
     B.append(("table", ["claim", "figure", "verdict"],
               [[cl["claim_id"], cl["figure"], claim_verdict_text(cl)] for cl in s["claims"]]))
     B += resolution_blocks(s)
-    B += z_blocks(s, figs)
+    B += z_blocks(s, figs, data)
     produced = [d for d in docs.values() if d is not None]
     total_wall = sum(d["wall_seconds"] for d in produced)
     commits = sorted({str(d["provenance"]["commit"]) for d in produced})
@@ -480,7 +494,7 @@ def build(data, figs, s):
          ("p", "Reproduction of Costagliola, Bosia and Pugno, Phys. Rev. E 94, 063003 (2016), with the "
                "springblock simulator. Each section below gives the claim the paper makes, the scene we simulate, "
                "our figure, the published numbers next to ours with their verdicts, and the claims it carries.")]
-    B += summary_blocks(s, docs, figs)
+    B += summary_blocks(s, docs, figs, data)
 
     for t in ORDER:
         B.append(("h", 2, TITLES[t]))

@@ -25,6 +25,7 @@ sys.path.insert(0, HERE)
 import reproduction_counts  # noqa: E402  (verdict counts per target, from the checker)
 
 PERCENT = re.compile(rb"(\d+(?:\.\d+)?)%")
+START = re.compile(rb"Reproducing (\S+) \(tier")  # the COMMENT of each target's custom command
 
 
 def fmt(s):
@@ -68,17 +69,24 @@ class Progress:
             self.shown = ""
 
 
-def run_logged(cmd, log_path, on_output=None):
-    """Run cmd with stdout and stderr into log_path; on_output(chunk) sees the bytes as they come."""
+def run_logged(cmd, log_path, on_line=None):
+    """Run cmd with stdout and stderr into log_path; on_line(bytes) sees each line as it comes
+    (carriage returns, as in progress lines, end a line too)."""
     with open(log_path, "wb") as log:
         p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+        pending = b""
         while True:
-            chunk = p.stdout.read1(65536) if hasattr(p.stdout, "read1") else p.stdout.read(4096)
+            chunk = p.stdout.read1(65536)
             if not chunk:
                 break
             log.write(chunk)
-            if on_output:
-                on_output(chunk)
+            if on_line:
+                pending += chunk.replace(b"\r", b"\n")
+                *lines, pending = pending.split(b"\n")
+                for ln in lines:
+                    on_line(ln)
+        if on_line and pending:
+            on_line(pending)
         return p.wait()
 
 
@@ -99,41 +107,71 @@ def read_names(rdir, listing):
 
 
 def run_targets(build, tier, logs, listing, describe):
-    """Each target of the listing in turn (each runs its repetitions on every core): one line per
-    target, one progress line meanwhile. Returns non-zero on the first failure."""
+    """The targets of the listing, in one build command (each target runs its repetitions on every
+    core, one after the other): a line per target as it finishes, one progress line meanwhile,
+    each target's output in logs/<target>.log. Returns non-zero on the first failure."""
     rdir = os.path.join(build, "reproduce")
     names = read_names(rdir, listing)
     tpath = os.path.join(rdir, "timings.json")
     timings = json.load(open(tpath)) if os.path.exists(tpath) else {}
-    past = timings.get(tier, {})
-    weight = {n: past.get(n, 1.0 if not past else max(past.values())) for n in names}
+    past = timings.get(tier) or default_weights()
+    weight = {n: past.get(n, max(past.values()) if past else 1.0) for n in names}
     progress = Progress(sum(weight.values()))
-    for i, n in enumerate(names, 1):
-        label = f"[{i}/{len(names)}] {n}"
-        progress.show(label, force=True)
+    cur = {"name": None, "t": 0.0, "log": None}
+    seen = []
 
-        def seen(chunk, label=label, n=n):
-            hits = PERCENT.findall(chunk)
+    def close():
+        n = cur["name"]
+        if n is None:
+            return
+        cur["log"].close()
+        wall = time.time() - cur["t"]
+        past[n] = wall
+        progress.done += weight.get(n, 0.0)
+        progress.clear()
+        print(f"  {n:<14}{fmt(wall):>8}   {describe(n)}", flush=True)
+        cur["name"] = None
+
+    def line(raw):
+        m = START.search(raw)
+        if m and m.group(1).decode() in weight:
+            close()
+            n = m.group(1).decode()
+            seen.append(n)
+            cur.update(name=n, t=time.time(), log=open(os.path.join(logs, f"{n}.log"), "wb"))
+            progress.show(f"[{len(seen)}/{len(names)}] {n}", force=True)
+        if cur["name"]:
+            cur["log"].write(raw + b"\n")
+            # The target's own progress lines ("[fig2] 44 scenes, 51.4% ..."), not make's "[ 86%]".
+            hits = PERCENT.findall(raw) if raw.lstrip().startswith(b"[" + cur["name"].encode() + b"]") else []
             if hits:
                 frac = min(1.0, float(hits[-1]) / 100)
-                progress.show(f"{label} {100 * frac:.0f}%", weight[n] * frac)
+                progress.show(f"[{len(seen)}/{len(names)}] {cur['name']} {100 * frac:.0f}%",
+                              weight[cur["name"]] * frac)
 
-        log = os.path.join(logs, f"{n}.log")
-        t = time.time()
-        rc = run_logged(["cmake", "--build", build, "--target", f"reproduce_{n}"], log, seen)
+    log = os.path.join(logs, listing.replace(".txt", ".log"))
+    rc = run_logged(["cmake", "--build", build, "--target"] + [f"reproduce_{n}" for n in names], log, line)
+    failed = cur["name"]
+    if rc:
         progress.clear()
-        if rc:
-            return fail(f"target {n}", log)
-        wall = time.time() - t
-        if wall > 2:  # an up-to-date target says nothing about its cost
-            past[n] = wall
-        progress.done += weight[n]
-        print(f"  {n:<14}{fmt(wall):>8}   {describe(n)}", flush=True)
+        return fail(f"target {failed}" if failed else "the reproduction", os.path.join(logs, f"{failed}.log")
+                    if failed else log)
+    close()
+    for n in names:
+        if n not in seen:
+            print(f"  {n:<14}{'up to date':>8}   {describe(n)}", flush=True)
     timings[tier] = past
     tmp = tpath + ".tmp"
     json.dump(timings, open(tmp, "w"), indent=1)
     os.replace(tmp, tpath)
     return 0
+
+
+def default_weights():
+    """Typical target costs on a 2-core machine, for the ETA of a first run (committed beside
+    this script, copied from a run's timings.json)."""
+    path = os.path.join(HERE, "reproduce_weights.json")
+    return json.load(open(path)) if os.path.exists(path) else {}
 
 
 def main():
