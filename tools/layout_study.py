@@ -32,6 +32,7 @@ from fractions import Fraction
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+from build_cache import cache_value  # noqa: E402
 from reproduction import evaluate  # noqa: E402
 
 CRITERION = ("admissible if every printed S/S_tot that is a count (the 15 rows of tpat1) is reproduced; "
@@ -45,14 +46,6 @@ DEPENDENT = [("tab_pat0", []), ("tab_pat1", []), ("tab_pat2", []), ("fig3", []),
              ("fig_p1", ["tab_pat0", "tab_pat2"]), ("fig5", ["tab_pat0", "tab_pat2"])]
 FREE = ["fig1", "fig_s1", "fig_s2", "fig2"]
 COUNTED = "tab_pat1"  # the table whose printed S/S_tot are counts (see CRITERION)
-
-
-def cache_value(build, key):
-    with open(os.path.join(build, "CMakeCache.txt")) as f:
-        for line in f:
-            if line.startswith(key + ":"):
-                return line.split("=", 1)[1].strip()
-    raise KeyError(f"{key} not in {build}/CMakeCache.txt")
 
 
 def run_variant(build, tier, variant, out_root):

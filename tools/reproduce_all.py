@@ -23,6 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import reproduction_counts  # noqa: E402  (verdict counts per target, from the checker)
+from build_cache import cache_value  # noqa: E402
 
 PERCENT = re.compile(rb"(\d+(?:\.\d+)?)%")
 START = re.compile(rb"Reproducing (\S+) \(tier")  # the COMMENT of each target's custom command
@@ -30,14 +31,6 @@ START = re.compile(rb"Reproducing (\S+) \(tier")  # the COMMENT of each target's
 
 def fmt(s):
     return f"{s:.0f} s" if s < 120 else f"{s / 60:.1f} min" if s < 7200 else f"{s / 3600:.1f} h"
-
-
-def cache_value(build, key):
-    with open(os.path.join(build, "CMakeCache.txt")) as f:
-        for line in f:
-            if line.startswith(key + ":"):
-                return line.split("=", 1)[1].strip()
-    raise KeyError(f"{key} not in {build}/CMakeCache.txt: configure first")
 
 
 class Progress:
