@@ -160,6 +160,24 @@ def run_targets(build, tier, logs, listing, describe):
     return 0
 
 
+def write_run_record(rdir, tier, jobs, phases, total, compiled):
+    """<build>/reproduce/last_run.json: the wall time of each phase of this run and of each target
+    (from timings.json), with the commit, the tier and the core count, so that the README's cost
+    figures are read from a file (tools/readme_cost.py) rather than typed."""
+    def git(*args):
+        r = subprocess.run(["git", "-C", REPO] + list(args), capture_output=True, text=True)
+        return r.stdout.strip() if r.returncode == 0 else "unknown"
+    timings = json.load(open(os.path.join(rdir, "timings.json")))
+    record = {"tier": tier, "jobs": jobs, "cores": os.cpu_count(), "commit": git("rev-parse", "--short", "HEAD"),
+              "dirty": bool(git("status", "--porcelain", "--untracked-files=no")),
+              "date": time.strftime("%Y-%m-%d"), "total_s": total, "phases_s": phases,
+              "compiled_units": compiled,
+              "targets_s": timings.get(tier, {})}
+    path = os.path.join(rdir, "last_run.json")
+    json.dump(record, open(path + ".tmp", "w"), indent=1)
+    os.replace(path + ".tmp", path)
+
+
 def default_weights():
     """Typical target costs on a 2-core machine, for the ETA of a first run (committed beside
     this script, copied from a run's timings.json)."""
@@ -188,14 +206,19 @@ def main():
     t = time.time()
     if run_logged(["cmake", "--build", build, "--target", "reproduce-programs", "springblock"] + jobs, log):
         return fail("build", log)
-    print(f"  {'build':<14}{fmt(time.time() - t):>8}", flush=True)
+    phases = {"build": time.time() - t}
+    # How much the build compiled: a fresh clone's cost and an incremental run's differ tenfold.
+    compiled = open(log, "rb").read().count(b"Building CXX object")
+    print(f"  {'build':<14}{fmt(phases['build']):>8}", flush=True)
 
     counter = reproduction_counts.Counter(rdir, os.path.join(REPO, "tables"))
     studies = a.studies
+    t = time.time()
     rc = run_targets(build, tier, logs, "studies.txt" if studies else "targets.txt",
                      (lambda n: "") if studies else counter.line)
     if rc:
         return rc
+    phases["targets"] = time.time() - t
     if studies:
         # Committed data: the report and figures read paper/data/<study>.json when the build
         # tree has no fresher copy.
@@ -223,7 +246,9 @@ def main():
             extra = counter.total_line()
         elif step == "report":
             extra = os.path.join(build, "paper", "report.html")
-        print(f"  {step:<14}{fmt(time.time() - t):>8}   {extra}", flush=True)
+        phases[step] = time.time() - t
+        print(f"  {step:<14}{fmt(phases[step]):>8}   {extra}", flush=True)
+    write_run_record(rdir, tier, a.jobs, phases, time.time() - t_start, compiled)
     print(f"reproduce-all: done in {fmt(time.time() - t_start)} (tier {tier}); "
           f"verdicts in {os.path.join(rdir, 'summary.tsv')}", flush=True)
     return 0

@@ -94,14 +94,16 @@ def counts_per_target(rows, claims, targets):
             for t in sorted(names)}
 
 
+def _one_of(value, allowed, where, key):
+    if value not in allowed:
+        raise SummaryError(f"{where}: {key} {value!r} not one of {allowed}")
+
+
 def _validate_row(r, i):
-    where = f"rows[{i}]"
-    _need(r, ROW_KEYS, where)
+    _need(r, ROW_KEYS, f"rows[{i}]")
     where = f"rows[{i}] ({r['row_id']} {r['coef']})"
-    if r["coef"] not in COEFS:
-        raise SummaryError(f"{where}: coef {r['coef']!r} not one of {COEFS}")
-    if r["verdict"] not in ROW_VERDICTS:
-        raise SummaryError(f"{where}: verdict {r['verdict']!r} not one of {ROW_VERDICTS}")
+    _one_of(r["coef"], COEFS, where, "coef")
+    _one_of(r["verdict"], ROW_VERDICTS, where, "verdict")
     for k in ("published", "err", "delta"):
         _number(r[k], f"{where}.{k}")
     for k in ROW_MEASURED:
@@ -111,11 +113,9 @@ def _validate_row(r, i):
 
 
 def _validate_claim(c, i):
-    where = f"claims[{i}]"
-    _need(c, CLAIM_KEYS, where)
+    _need(c, CLAIM_KEYS, f"claims[{i}]")
     where = f"claims[{i}] ({c['claim_id']})"
-    if c["verdict"] not in CLAIM_VERDICTS:
-        raise SummaryError(f"{where}: verdict {c['verdict']!r} not one of {CLAIM_VERDICTS}")
+    _one_of(c["verdict"], CLAIM_VERDICTS, where, "verdict")
     if not isinstance(c["lines"], list) or (c["verdict"] != "missing" and not c["lines"]):
         raise SummaryError(f"{where}: a judged claim needs its comparison lines")
     for j, ln in enumerate(c["lines"]):
