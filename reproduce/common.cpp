@@ -19,7 +19,7 @@
 #include "springblock/io.hpp"
 #include "springblock/scene_fields.hpp"
 #include "springblock/surface.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace repro {
 namespace {

@@ -19,7 +19,7 @@ Checked: the event rows equal the tables' mu_s (same seeds).
 #include <fmt/format.h>
 
 #include "common.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 #include "table_scenes.hpp"
 
 namespace {

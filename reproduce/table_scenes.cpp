@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace repro {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace repro {
 namespace {

@@ -55,13 +55,28 @@ def run_lines(run):
     return out
 
 
+UNIT_S = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+
+
+def runs_in_seconds(path):
+    """run name (without /iterations:N) -> median counters, real_time converted to seconds (each
+    benchmark states its own time unit)."""
+    units = {r["run_name"]: r.get("time_unit", "ns") for r in json.load(open(path))["benchmarks"]}
+    out = {}
+    for name, c in medians(path).items():
+        c = dict(c)
+        c["real_time"] *= UNIT_S[units[name]]
+        out[name.split("/iterations:")[0]] = c
+    return out
+
+
 def context_line(path):
     ctx = json.load(open(path)).get("context", {})
     return f"{ctx.get('date', '?')[:10]}, {ctx.get('num_cpus', '?')} CPUs, {os.path.basename(path)}"
 
 
 def methods_lines(path):
-    rows = {name.split("/iterations:")[0]: c for name, c in medians(path).items()}
+    rows = runs_in_seconds(path)
     out = ["", f"One repetition, RK4 at the paper's step h = 1e-7 s against the event method, same scene and "
                f"seed, medians of interleaved repetitions ({context_line(path)}):", "",
            "| scene | rk4 | event | setting | ratio | mu_s rk4 / event |", "|---|---|---|---|---|---|"]
@@ -77,7 +92,7 @@ def methods_lines(path):
 
 
 def reproduction_lines(path):
-    rows = {name.split("/iterations:")[0]: c for name, c in medians(path).items()}
+    rows = runs_in_seconds(path)
     out = ["", f"Where a target's time goes, one repetition of the paper tier's scenes ({context_line(path)}): "
                "the loading phase against the whole run, and the cost per stick/slip switch "
                "(`bench/bench_reproduction.cpp`):", "",

@@ -15,7 +15,7 @@
 #include "springblock/scene.hpp"
 #include "springblock/scene_fields.hpp"
 #include "springblock/theory.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 #ifndef SPRINGBLOCK_COMMIT
 #define SPRINGBLOCK_COMMIT "unknown"

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "springblock/scene_fields.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace sb {
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <system_error>
 
-#include "springblock/units.hpp"  // InputError
+#include "springblock/errors.hpp"  // InputError
 
 namespace sb {
 namespace {

@@ -5,15 +5,9 @@
 #include <string>
 #include <string_view>
 
-namespace sb {
+#include "springblock/errors.hpp"  // InputError, thrown by the parsers below
 
-// Thrown for any invalid user input. `field` names the option or scene-file key,
-// `message` says what was wrong and the allowed range. The CLI maps it to exit code 2.
-struct InputError : std::runtime_error {
-  std::string field;
-  InputError(std::string field_, const std::string& message)
-      : std::runtime_error(field_ + ": " + message), field(std::move(field_)) {}
-};
+namespace sb {
 
 // Physical dimension a quantity is expected to have.
 enum class Dimension { Length, Time, Rate, Pressure, Density, Velocity, Dimensionless };

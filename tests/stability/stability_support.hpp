@@ -12,7 +12,7 @@
 #include "springblock/energy.hpp"
 #include "springblock/integrate/integrator.hpp"
 #include "springblock/scene.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace sbtest {
 

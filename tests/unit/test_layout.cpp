@@ -10,7 +10,7 @@
 #include "springblock/scene.hpp"
 #include "springblock/scene_fields.hpp"
 #include "springblock/surface.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace {
 

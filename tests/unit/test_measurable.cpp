@@ -16,7 +16,7 @@
 #include "springblock/ensemble.hpp"
 #include "springblock/io.hpp"
 #include "springblock/scene.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 using namespace sb;
 namespace fs = std::filesystem;

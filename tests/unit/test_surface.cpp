@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "springblock/surface.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 #include "springblock/integrate/event_driven.hpp"
 #include "springblock/integrate/integrator.hpp"
 #include "springblock/integrate/rk4.hpp"
-#include "springblock/units.hpp"
+#include "springblock/errors.hpp"
 
 namespace sb {
 

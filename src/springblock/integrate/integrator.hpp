@@ -6,7 +6,7 @@
 
 #include "springblock/model.hpp"
 #include "springblock/observe/observer.hpp"
-#include "springblock/scene.hpp"
+#include "springblock/run_control.hpp"
 #include "springblock/state.hpp"
 
 namespace sb {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "springblock/observe/observer.hpp"
-#include "springblock/scene.hpp"
+#include "springblock/run_control.hpp"
 
 namespace sb {
 

@@ -1,0 +1,56 @@
+#pragma once
+// How a run is integrated and how its coefficients are read off mu(t): the part of a scene that
+// the integrators and observers need. Kept apart from scene.hpp so that they depend on what they
+// use, not on the whole scene (surface, material, scene files).
+#include <string>
+
+namespace sb {
+
+enum class Method { RK4, Event };
+std::string method_name(Method m);
+Method parse_method(const std::string& text);  // throws InputError("method")
+
+// How the macroscopic coefficients are read off mu(t). See paper/choices.md.
+struct ExtractionRules {
+  // Where the loading phase ends; mu_s is the largest mu(t) reached before that moment.
+  //  AllSlipped (default): when every contact block has slid at least once, i.e. the whole
+  //    surface has moved. Precursor slips of a few blocks, however large their mu drop on a
+  //    surface with few contacts, do not end it.
+  //  Drop: when mu(t) first falls `peak_drop` below its running maximum. Simple, but on
+  //    surfaces with few contact blocks a precursor of 2-5 blocks already drops mu by 0.05.
+  enum class PeakRule { AllSlipped, Drop } peak_rule = PeakRule::AllSlipped;
+  double peak_drop = 0.05;
+  // mu_d averages mu(t) from (first macroscopic slip + skip) to the end of the run,
+  // skip in units of the loading time t0 (see RunControl).
+  double mu_d_skip_t0 = 0.25;
+};
+
+struct RunControl {
+  // The event method by default: it locates every stick/slip switch instead of resolving it to
+  // one step, and is 7 to 600 times faster than RK4 at the paper's step (README, Cost). RK4 is
+  // kept, by name, as the paper's own method.
+  Method method = Method::Event;
+  double dt_s = 1e-7;        // RK4 step (the paper's 1e-4 ms)
+  // event method: relative error tolerance. The default is the loosest decade tolerance whose
+  // first-peak error (accuracy_cost: worst of 3 seeds against tol 1e-12) stays below a tenth of
+  // the smallest mu_s standard error the reproduction compares (1.4e-3): 5.2e-5 at 1e-8, 1.9e-3
+  // at 1e-7 (paper/choices.md, Integration).
+  double tol = 1e-8;
+  // event method: mobile runs of up to this many blocks are propagated exactly by their modes
+  // rather than stepped (0: step every run). The default is the measured optimum (bench_methods).
+  int modal_max_run = 2;
+  // event method: ringing groove-only runs (no contact block, so no stop to search for; only
+  // their stuck neighbours' crossings) of up to this many blocks are propagated by their modes
+  // too. Separate from modal_max_run because a groove run has no stop events: it pays off up to
+  // much longer runs (bench_methods, modal_groove/*).
+  int modal_max_groove = 32;
+  // Run length in units of t0 = (mu_s)_m F_n / (K_s v), the time the slider needs to load an
+  // average block to its threshold. Scaling with t0 keeps the number of stick-slip cycles the
+  // same when the contact fraction (hence F_n) changes. duration_s > 0 overrides.
+  double duration_t0 = 4.0;
+  double duration_s = 0.0;
+  double sample_dt_s = 1e-5;  // spacing of mu(t) samples
+  bool stop_after_mu_s = false;  // a scene that only needs mu_s stops at the first slip
+};
+
+}  // namespace sb
