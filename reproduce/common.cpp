@@ -389,9 +389,13 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
         continue;
       }
       const auto& result = results[pooled[k]];
-      std::fprintf(stderr, "[%s]   %s: mu_s = %.4f +- %.4f, mu_d = %.4f +- %.4f (%.1fs of the pool)\n", target.c_str(),
-                   ls.id.c_str(), result.mu_s.mean, result.mu_s.sem, result.mu_d.mean, result.mu_d.sem,
-                   result.wall_s);
+      // A statistic no repetition contributed to (mu_d of a scene stopped at its first slip) is
+      // "not measured", never a printed nan.
+      auto stat = [](const sb::Statistic& x) {
+        return x.n > 0 ? fmt::format("{:.4f} +- {:.4f}", x.mean, x.sem) : std::string("not measured");
+      };
+      std::fprintf(stderr, "[%s]   %s: mu_s = %s, mu_d = %s (%.1fs of the pool)\n", target.c_str(), ls.id.c_str(),
+                   stat(result.mu_s).c_str(), stat(result.mu_d).c_str(), result.wall_s);
       records.push_back(scene_record(ls, result, opt.command_line));
       // Observed on another scene's simulation (same trajectory, other rules or run length).
       if (result.trajectory_from >= 0) records.back()["trajectory_from"] = scenes[owner[result.trajectory_from]].id;

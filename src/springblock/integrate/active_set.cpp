@@ -1,4 +1,5 @@
 #include "springblock/integrate/active_set.hpp"
+#include "springblock/integrate/run_stiffness.hpp"
 
 #include <gsl/gsl_linalg.h>
 
@@ -83,7 +84,7 @@ const ActiveSet::Shape& ActiveSet::shape(const Chain& c, int n, bool left, bool 
   Shape sh{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
   auto solve = [&](auto&& rhs, std::vector<double>& x) {
     for (int k = 0; k < n; ++k) {
-      diag_[k] = c.K_s + ((k > 0 || left) ? K_int_ : 0.0) + ((k + 1 < n || right) ? K_int_ : 0.0);
+      diag_[k] = run_stiffness_diagonal(c.K_s, K_int_, n, k, left, right);
       off_[k] = -K_int_;
       rhs_[k] = rhs(k);
     }

@@ -1,4 +1,5 @@
 #include "springblock/integrate/modal_runs.hpp"
+#include "springblock/integrate/run_stiffness.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -52,12 +53,7 @@ const ModalRuns::Basis& ModalRuns::basis(const Chain& c, int n, bool left, bool 
   const auto key = std::make_tuple(n, left, right);
   auto it = bases_.find(key);
   if (it != bases_.end()) return it->second;
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (int r = 0; r < n; ++r) {
-    K(r, r) = c.K_s + ((r > 0 || left) ? K_int_ : 0.0) + ((r + 1 < n || right) ? K_int_ : 0.0);
-    if (r + 1 < n) K(r, r + 1) = K(r + 1, r) = -K_int_;
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(run_stiffness(c.K_s, K_int_, n, left, right));
   Basis b;
   b.Q = es.eigenvectors();
   const Eigen::VectorXd& lambda = es.eigenvalues();

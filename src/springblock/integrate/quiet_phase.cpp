@@ -1,4 +1,5 @@
 #include "springblock/integrate/quiet_phase.hpp"
+#include "springblock/integrate/run_stiffness.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,15 +33,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int) {
     const auto key = std::make_tuple(s.n, int(s.left_stuck), int(s.right_stuck));
     auto it = cache_.find(key);
     if (it == cache_.end()) {
-      Eigen::MatrixXd K = Eigen::MatrixXd::Zero(s.n, s.n);
-      for (int r = 0; r < s.n; ++r) {
-        K(r, r) = c.K_s;
-        // One internal spring per neighbour that exists: a groove block or a stuck block.
-        if (r > 0 || s.left_stuck) K(r, r) += c.K_int;
-        if (r + 1 < s.n || s.right_stuck) K(r, r) += c.K_int;
-        if (r + 1 < s.n) K(r, r + 1) = K(r + 1, r) = -c.K_int;
-      }
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K);
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(run_stiffness(c.K_s, c.K_int, s.n, s.left_stuck, s.right_stuck));
       Decomp d{es.eigenvectors(), es.eigenvalues(), {}, {}, {}, {}, {}, {}, {}};
       for (int k = 0; k < s.n; ++k) d.modes.push_back({0.5 * c.gamma, d.lambda[k] / c.m});
       for (int k = 0; k < s.n; ++k) d.first_row.push_back(d.Q(0, k)), d.last_row.push_back(d.Q(s.n - 1, k));
