@@ -20,7 +20,6 @@ import base64
 import csv
 import html
 import json
-import math
 import os
 import re
 import sys
@@ -308,10 +307,10 @@ def z_blocks(s, figs, data):
             ("p", "Where the spread comes from: the mean difference ours − paper by pattern family (levels of "
                   "patterning; a systematic offset shows as a mean away from zero)."),
             ("table", ["coefficient", "family", "rows", "mean ours − paper", "mean z"], family_rows(s))] + \
-        layout_z_blocks(data)
+        layout_z_blocks(data, z['normal']['2'])
 
 
-def layout_z_blocks(data):
+def layout_z_blocks(data, normal_within2):
     """Whether any admissible pattern layout brings the z-scores closer to normal (the layout study)."""
     doc, _ = report_studies.load_study(data, "layout")
     if doc is None:
@@ -320,7 +319,7 @@ def layout_z_blocks(data):
     best = max(ok, key=lambda v: v["z_distribution"]["within"]["2"])
     f = best["z_distribution"]["within"]["2"]
     verdict = (f"below the fidelity target of {WITHIN2_TARGET:.2f} (a standard normal gives "
-               f"{s_normal_within2():.3f}): the spread is not a matter of where the pawls sit"
+               f"{normal_within2:.3f}): the spread is not a matter of where the pawls sit"
                if f < WITHIN2_TARGET else f"at or above the fidelity target of {WITHIN2_TARGET:.2f}")
     return [("p", f"Across the {len(ok)} admissible layouts of the layout study (Optional studies), the largest "
                   f"fraction of z within ±2 is {f:.3f} ({best['variant']}; {doc['chosen']} is the one the "
@@ -329,10 +328,6 @@ def layout_z_blocks(data):
 
 # The fidelity target for the spread of the z-scores (issue 14): at least this fraction within 2.
 WITHIN2_TARGET = 0.90
-
-
-def s_normal_within2():
-    return math.erf(2 / math.sqrt(2))
 
 
 def family_rows(s):

@@ -195,7 +195,8 @@ std::vector<Layout> parse_layout(const std::string& text) {
       throw InputError("layout", what);
     }
   }
-  if (out.size() > kMaxLevels) throw InputError("layout", std::string("at most 8 levels, got '").append(text).append("'"));
+  if (out.size() > kMaxLevels)
+    throw InputError("layout", "at most " + std::to_string(kMaxLevels) + " levels, got '" + text + "'");
   return out;
 }
 

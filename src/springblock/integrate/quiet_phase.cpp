@@ -197,15 +197,16 @@ void QuietPhase::row_to_physical(const Segment& s, int r, double t, const double
   const Decomp& d = decomps_[s.decomp];
   double du = 0, dv = 0;
   if (q != nullptr) {
-    // The same products summed in the same order as Q(r, k) would give, from a contiguous copy.
-    const double* row = r == 0 ? d.first_row.data() : r == s.n - 1 ? d.last_row.data() : nullptr;
+    // Row r of Q (stored by column: stride n), or the contiguous copy of an end row; the same
+    // products summed in the same order either way.
+    const bool end_row = r == 0 || r == s.n - 1;
+    const double* row = r == 0 ? d.first_row.data() : r == s.n - 1 ? d.last_row.data() : d.Q.data() + r;
+    const int stride = end_row ? 1 : s.n;
     for (int k = 0; k < s.n; ++k) {
-      const double Qrk = row ? row[k] : d.Q(r, k);
-      du += Qrk * q[k];
-      dv += Qrk * qd[k];
+      du += row[k * stride] * q[k];
+      dv += row[k * stride] * qd[k];
     }
   }
-  if (q == nullptr) du = dv = 0;
   u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t + du;
   v[s.first + r] = B_[s.offset + r] + dv;
 }
