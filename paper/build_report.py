@@ -17,7 +17,6 @@ outputs cannot drift apart and no Markdown converter is needed.
 """
 import argparse
 import base64
-import csv
 import html
 import json
 import os
@@ -32,6 +31,7 @@ sys.path.insert(0, str(REPO / "tables"))
 sys.path.insert(0, str(REPO / "tools"))
 import render_tables  # noqa: E402
 import summary_schema as schema  # noqa: E402
+from reproduction.inputs import read_tsv  # noqa: E402  (one reader of the tables)
 
 sys.path.insert(0, str(REPO / "paper"))
 import report_studies  # noqa: E402
@@ -72,12 +72,6 @@ def load_json(path):
     if not path.is_file():
         return None
     return json.loads(path.read_text())
-
-
-def read_tsv(path):
-    with open(path) as f:
-        lines = [ln for ln in f if ln.strip() and not ln.startswith("#")]
-    return list(csv.DictReader(lines, delimiter="\t"))
 
 
 def narrative(target):

@@ -7,7 +7,6 @@ tools/summary_schema.py), so the tables and the check cannot disagree; without a
 is no table. The one thing the summary does not carry is the simulated contact fraction S/S_tot,
 read from the table target's document and flagged where it differs from the printed one."""
 import argparse
-import csv
 import html
 import json
 import os
@@ -20,6 +19,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "tools"))
 import summary_schema as schema  # noqa: E402
+from reproduction.inputs import read_tsv  # noqa: E402  (one reader of the tables)
 
 TABLES = ("tab_pat0", "tab_pat1", "tab_pat2")
 CAPTIONS = {
@@ -34,12 +34,6 @@ NOT_MEASURED = "–"  # a cell of a missing result (its verdict cell says "missi
 DETAIL_HEAD = ["coef", "published", "ours", "n", "d", "z", "k", "k·σ (detect)", "t95·σ (equiv.)", "Δ", "verdict"]
 VERDICT_CLASS = {"agree": "ok", "disagree_known": "known", "disagree_new": "bad", "not_resolved": "unres",
                  "missing": "bad", "holds": "ok", "fails_known": "known", "fails_new": "bad"}
-
-
-def read_tsv(path):
-    with open(path) as f:
-        lines = [ln for ln in f if ln.strip() and not ln.startswith("#")]
-    return list(csv.DictReader(lines, delimiter="\t"))
 
 
 def verdict_text(rec):
