@@ -11,7 +11,7 @@
 
 #include "bench_setup.hpp"
 #include "naive_rk4.hpp"
-#include "springblock/integrate/rk4.hpp"
+#include "springblock/integrate/methods/rk4.hpp"
 
 namespace sb::bench {
 namespace {

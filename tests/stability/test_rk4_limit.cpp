@@ -7,7 +7,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "springblock/integrate/rk4.hpp"
+#include "springblock/integrate/methods/rk4.hpp"
 #include "stability_support.hpp"
 
 namespace {

@@ -1,7 +1,7 @@
 // Tests of the active set that localises the event-driven stepper: which runs are stepped, which
 // stuck blocks are watched, the settled grooves' affine solution against the equations of motion,
 // and the closed-form threshold crossing of a stuck block with no stepped neighbour.
-#include "springblock/integrate/active_set.hpp"
+#include "springblock/integrate/events/active_set.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Tests of the event-driven integrator (Dormand-Prince 5(4) with located switching events and
 // an exact quiet-phase propagator). References: the closed-form single-block cycle, the stepper
 // itself at a much tighter tolerance, and the paper's RK4 at two step sizes.
-#include "springblock/integrate/event_driven.hpp"
+#include "springblock/integrate/methods/event_driven.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "hand_chain.hpp"
-#include "springblock/integrate/quiet_phase.hpp"
-#include "springblock/integrate/rk4.hpp"
+#include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/methods/rk4.hpp"
 #include "springblock/observe/friction_observer.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/theory.hpp"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "springblock/integrate/rk4.hpp"
+#include "springblock/integrate/methods/rk4.hpp"
 #include "springblock/observe/friction_observer.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/scene_fields.hpp"

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <vector>
 
-#include "springblock/integrate/rk4.hpp"
+#include "springblock/integrate/methods/rk4.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/theory.hpp"
 

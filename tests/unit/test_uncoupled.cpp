@@ -1,7 +1,7 @@
 // Tests of the exact per-block solution for chains without internal springs (K_int = 0),
 // against the Dormand-Prince stepper at a tight tolerance (the event method with fast-forward
 // off), and its handling of creeping blocks (mu_d clipped to mu_s), which have no second event.
-#include "springblock/integrate/uncoupled.hpp"
+#include "springblock/integrate/methods/uncoupled.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "hand_chain.hpp"
-#include "springblock/integrate/event_driven.hpp"
+#include "springblock/integrate/methods/event_driven.hpp"
 
 namespace {
 

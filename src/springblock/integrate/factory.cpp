@@ -1,6 +1,6 @@
-#include "springblock/integrate/event_driven.hpp"
+#include "springblock/integrate/methods/event_driven.hpp"
 #include "springblock/integrate/integrator.hpp"
-#include "springblock/integrate/rk4.hpp"
+#include "springblock/integrate/methods/rk4.hpp"
 #include "springblock/errors.hpp"
 
 namespace sb {

@@ -1,4 +1,5 @@
 #include "springblock/observe/fan_out.hpp"
+#include "springblock/sample_schedule.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +14,8 @@ FanOut::FanOut(std::vector<View> views, double sample_dt, Within within)
     if (!v.obs) throw std::logic_error("FanOut: a view without an observer");
 }
 
-// Samples sit at k sample_dt (RK4's at n h with n a multiple of the stride, which round to the
-// same k), so the index is recovered by rounding.
-long long FanOut::index_of(double t) const { return std::llround(t / sample_dt_); }
+// Every method samples on SampleSchedule's grid, so the index is recovered by rounding.
+long long FanOut::index_of(double t) const { return SampleSchedule::index_of(t, sample_dt_); }
 
 void FanOut::record(View& v, const State& s) {
   v.steps = s.steps;

@@ -1,5 +1,5 @@
-#include "springblock/integrate/quiet_phase.hpp"
-#include "springblock/integrate/run_stiffness.hpp"
+#include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/linear/run_stiffness.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -31,15 +31,12 @@
 #include <tuple>
 #include <vector>
 
-#include "springblock/integrate/modal_runs.hpp"
+#include "springblock/integrate/block_range.hpp"
+#include "springblock/integrate/linear/modal_runs.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 
 namespace sb::event_detail {
-
-struct Span {
-  int lo, hi;  // blocks lo .. hi-1
-};
 
 class ActiveSet {
  public:
@@ -54,7 +51,7 @@ class ActiveSet {
   void rebuild(const Chain& c, const State& s, const std::uint8_t* touched = nullptr);
 
   // Runs stepped by Dormand-Prince, in block order.
-  const std::vector<Span>& stepped() const { return stepped_; }
+  const std::vector<BlockRange>& stepped() const { return stepped_; }
   // Blocks whose events the step's dense output must be searched for: every sliding block and
   // every stuck block next to a stepped run (K_int > 0).
   const std::vector<int>& watched() const { return watched_; }
@@ -97,12 +94,12 @@ class ActiveSet {
 
  private:
   struct Run {
-    Span span;
+    BlockRange span;
     Kind kind;       // kStepped (active or ringing) or kSettled
     bool grooves;    // grooves only (never holds a contact block)
   };
   // A, B of the groove run over [lo, hi) held by stuck blocks (or free ends) at its boundaries.
-  void particular(const Chain& c, const State& s, Span r);
+  void particular(const Chain& c, const State& s, BlockRange r);
   // The particular solution is linear in the two boundary positions:
   //   B = K^-1 K_s v 1,  A = K^-1 (-m gamma B) + u_left K_int K^-1 e_1 + u_right K_int K^-1 e_n,
   // and K depends only on the run's length and whether each end is held. Solved once per shape.
@@ -111,7 +108,7 @@ class ActiveSet {
   };
   const Shape& shape(const Chain& c, int n, bool left, bool right);
   std::map<std::tuple<int, bool, bool>, Shape> shapes_;
-  bool settled_now(const State& s, Span r) const;
+  bool settled_now(const State& s, BlockRange r) const;
   // Fill stepped_ and watched_ from runs_.
   void list_stepped(const State& s);
   // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
@@ -143,7 +140,7 @@ class ActiveSet {
   double eps_u_, eps_v_;
   std::vector<std::uint8_t> kind_;
   std::vector<Run> runs_;
-  std::vector<Span> stepped_;
+  std::vector<BlockRange> stepped_;
   std::vector<int> watched_;
   std::vector<double> A_, B_;          // per block, valid in groove runs
   std::vector<double> t_cross_;        // per contact block: next closed-form or modal event (inf if none / watched)

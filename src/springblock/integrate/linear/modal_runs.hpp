@@ -27,8 +27,8 @@
 
 #include <Eigen/Dense>
 
-#include "springblock/integrate/damped_mode.hpp"
-#include "springblock/integrate/edge_march.hpp"
+#include "springblock/integrate/linear/damped_mode.hpp"
+#include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 

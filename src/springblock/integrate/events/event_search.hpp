@@ -10,8 +10,8 @@
 // change is refined by bisection to round-off in t.
 #include <vector>
 
-#include "springblock/integrate/active_set.hpp"
-#include "springblock/integrate/dopri5.hpp"
+#include "springblock/integrate/events/active_set.hpp"
+#include "springblock/integrate/step/dopri5.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 

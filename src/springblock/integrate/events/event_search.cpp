@@ -1,4 +1,4 @@
-#include "springblock/integrate/event_search.hpp"
+#include "springblock/integrate/events/event_search.hpp"
 
 #include <cmath>
 

@@ -10,9 +10,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "springblock/integrate/active_set.hpp"
-#include "springblock/integrate/chain_accel.hpp"
-#include "springblock/integrate/kernel_clones.hpp"
+#include "springblock/integrate/block_range.hpp"
+#include "springblock/integrate/step/chain_accel.hpp"
+#include "springblock/integrate/step/kernel_clones.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
@@ -48,13 +48,13 @@ class Dopri5 {
 
   // Stage 1 at (u, v, t). Needed at the start and after every switch (the right-hand side jumps).
   template <bool Coupled, bool Damped>
-  void first_stage(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v, double t,
+  void first_stage(const Chain& c, const std::vector<BlockRange>& spans, const double* u, const double* v, double t,
                    const double* mobile, const double* f_kin);
 
   // One trial step of size h from (u, v, t) whose stage 1 is current. Leaves the 5th-order
   // solution in u1(), v1() and returns the error in units of the tolerance (accept if <= 1).
   template <bool Coupled, bool Damped>
-  double attempt(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v, double t,
+  double attempt(const Chain& c, const std::vector<BlockRange>& spans, const double* u, const double* v, double t,
                  double h, const double* mobile, const double* f_kin, double atol_u, double atol_v, double rtol);
 
   // After accepting: stage 7 becomes the next step's stage 1 (FSAL).
@@ -72,7 +72,7 @@ class Dopri5 {
 
  private:
   double dense(const double* y0, const double* y1, int k_base, int i, double theta) const;
-  double error_norm(const std::vector<Span>& spans, const double* u, const double* v, const double* mobile,
+  double error_norm(const std::vector<BlockRange>& spans, const double* u, const double* v, const double* mobile,
                     double atol_u, double atol_v, double rtol) const;
 
   int N_;
@@ -88,9 +88,9 @@ class Dopri5 {
 };
 
 template <bool Coupled, bool Damped>
-SB_KERNEL_CLONES void Dopri5::first_stage(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v,
+SB_KERNEL_CLONES void Dopri5::first_stage(const Chain& c, const std::vector<BlockRange>& spans, const double* u, const double* v,
                          double t, const double* mobile, const double* f_kin) {
-  for (const Span& sp : spans) {
+  for (const BlockRange& sp : spans) {
     for (int i = sp.lo; i < sp.hi; ++i) k_[0][i] = v[i];
     chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, u, v, t, mobile, f_kin, k_[7]);
   }
@@ -126,7 +126,7 @@ SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __rest
 }
 
 template <bool Coupled, bool Damped>
-SB_KERNEL_CLONES double Dopri5::attempt(const Chain& c, const std::vector<Span>& spans, const double* u, const double* v,
+SB_KERNEL_CLONES double Dopri5::attempt(const Chain& c, const std::vector<BlockRange>& spans, const double* u, const double* v,
                        double t, double h, const double* mobile, const double* f_kin, double atol_u,
                        double atol_v, double rtol) {
   using T = Dp5Tableau;
@@ -135,36 +135,36 @@ SB_KERNEL_CLONES double Dopri5::attempt(const Chain& c, const std::vector<Span>&
   double* const* K = k_;  // K[s] velocity stage s (= the trial v), K[7+s] acceleration stage s
   // Stage s from the trial positions ut and the trial velocities already in K[s].
   auto stage = [&](int s, double cs, const double* pos) __attribute__((always_inline)) {
-    for (const Span& sp : spans)
+    for (const BlockRange& sp : spans)
       chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, pos, K[s], t + cs * h, mobile, f_kin, K[7 + s]);
   };
-  for (const Span& sp : spans) {
+  for (const BlockRange& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a21, K[0]);
     comb(sp.lo, sp.hi, K[1], v, h, T::a21, K[7]);
   }
   stage(1, T::c2, ut);
-  for (const Span& sp : spans) {
+  for (const BlockRange& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a31, K[0], T::a32, K[1]);
     comb(sp.lo, sp.hi, K[2], v, h, T::a31, K[7], T::a32, K[8]);
   }
   stage(2, T::c3, ut);
-  for (const Span& sp : spans) {
+  for (const BlockRange& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a41, K[0], T::a42, K[1], T::a43, K[2]);
     comb(sp.lo, sp.hi, K[3], v, h, T::a41, K[7], T::a42, K[8], T::a43, K[9]);
   }
   stage(3, T::c4, ut);
-  for (const Span& sp : spans) {
+  for (const BlockRange& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a51, K[0], T::a52, K[1], T::a53, K[2], T::a54, K[3]);
     comb(sp.lo, sp.hi, K[4], v, h, T::a51, K[7], T::a52, K[8], T::a53, K[9], T::a54, K[10]);
   }
   stage(4, T::c5, ut);
-  for (const Span& sp : spans) {
+  for (const BlockRange& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a61, K[0], T::a62, K[1], T::a63, K[2], T::a64, K[3], T::a65, K[4]);
     comb(sp.lo, sp.hi, K[5], v, h, T::a61, K[7], T::a62, K[8], T::a63, K[9], T::a64, K[10], T::a65, K[11]);
   }
   stage(5, 1.0, ut);
   // The 5th-order solution; stage 7 is evaluated at it (c7 = 1, a7 = b): FSAL.
-  for (const Span& sp : spans) {
+  for (const BlockRange& sp : spans) {
     comb(sp.lo, sp.hi, u1, u, h, T::b1, K[0], T::b3, K[2], T::b4, K[3], T::b5, K[4], T::b6, K[5]);
     comb(sp.lo, sp.hi, K[6], v, h, T::b1, K[7], T::b3, K[9], T::b4, K[10], T::b5, K[11], T::b6, K[12]);
   }

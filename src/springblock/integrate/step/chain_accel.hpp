@@ -5,7 +5,7 @@
 // scene without internal springs or damping does not pay for them. The neighbours lo-1 and hi
 // are read from u (they are stuck blocks while the span is stepped). The chain's free ends are
 // peeled off so the interior loop has no branch and vectorises.
-#include "springblock/integrate/kernel_clones.hpp"
+#include "springblock/integrate/step/kernel_clones.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {

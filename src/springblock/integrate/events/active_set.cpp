@@ -1,5 +1,5 @@
-#include "springblock/integrate/active_set.hpp"
-#include "springblock/integrate/run_stiffness.hpp"
+#include "springblock/integrate/events/active_set.hpp"
+#include "springblock/integrate/linear/run_stiffness.hpp"
 
 #include <gsl/gsl_linalg.h>
 
@@ -97,7 +97,7 @@ const ActiveSet::Shape& ActiveSet::shape(const Chain& c, int n, bool left, bool 
   return shapes_.emplace(key, std::move(sh)).first->second;
 }
 
-void ActiveSet::particular(const Chain& c, const State& s, Span r) {
+void ActiveSet::particular(const Chain& c, const State& s, BlockRange r) {
   const int n = r.hi - r.lo;
   const bool left = r.lo > 0, right = r.hi < N_;  // held by a stuck block there (else a free end)
   const Shape& sh = shape(c, n, left, right);
@@ -108,7 +108,7 @@ void ActiveSet::particular(const Chain& c, const State& s, Span r) {
   }
 }
 
-bool ActiveSet::settled_now(const State& s, Span r) const {
+bool ActiveSet::settled_now(const State& s, BlockRange r) const {
   if (!settle_grooves_) return false;
   for (int i = r.lo; i < r.hi; ++i) {
     if (std::fabs(s.u[i] - (A_[i] + B_[i] * s.t)) > eps_u_) return false;
@@ -154,7 +154,7 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
   auto switched = [&](int i) {
     return i >= 0 && i < N_ && (s.dir[i] != dir_prev_[i] || (touched != nullptr && touched[i]));
   };
-  auto untouched = [&](Span sp) {
+  auto untouched = [&](BlockRange sp) {
     for (int i = sp.lo - 1; i <= sp.hi; ++i)
       if (switched(i)) return false;
     return true;

@@ -1,11 +1,12 @@
-#include "springblock/integrate/rk4.hpp"
+#include "springblock/integrate/methods/rk4.hpp"
+#include "springblock/sample_schedule.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
-#include "springblock/integrate/kernel_clones.hpp"
+#include "springblock/integrate/step/kernel_clones.hpp"
 
 // The step and the switch screen have AVX2 clones (kernel_clones.hpp). With the screen they made
 // accuracy_cost's RK4 settings x1.4-2.2 faster (paper tier, before and after), bit-identical.
@@ -191,7 +192,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     w.f_kin[i] = s.dir[i] * c.f_kinetic[i];
     set_screen(c, s, w, i);
   }
-  const std::int64_t stride = std::max<std::int64_t>(1, std::llround(sample_dt / h));
+  const std::int64_t stride = SampleSchedule::stride(sample_dt, h);
   const std::int64_t n_end = std::llround(t_end / h);
   const bool all_contact = c.n_contact == c.N;
   // Times are n*h from an integer step count, so long runs do not accumulate rounding.

@@ -1,4 +1,4 @@
-#include "springblock/integrate/uncoupled.hpp"
+#include "springblock/integrate/methods/uncoupled.hpp"
 
 #include <cmath>
 #include <limits>
@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "springblock/integrate/damped_mode.hpp"
-#include "springblock/integrate/sample_grid.hpp"
-#include "springblock/integrate/switching.hpp"
+#include "springblock/integrate/linear/damped_mode.hpp"
+#include "springblock/integrate/events/switching.hpp"
+#include "springblock/sample_schedule.hpp"
 
 namespace sb::event_detail {
 namespace {
@@ -235,12 +235,12 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
     obs.sample(c_, s_);
   };
   sample(t0);
-  long long k = static_cast<long long>(std::floor(t0 / sample_dt)) + 1;
+  SampleSchedule clock(sample_dt, t0);
   while (!obs.wants_stop()) {
     // Drop entries made stale by a later reschedule.
     while (!queue_.empty() && queue_.top().version != b_[queue_.top().i].version) queue_.pop();
     const double t_event = queue_.empty() ? kInf : queue_.top().t;
-    const double t_sample = static_cast<double>(k) * sample_dt;
+    const double t_sample = clock.next();
     if (t_event <= t_sample && t_event <= t_end) {
       const int i = queue_.top().i;
       queue_.pop();
@@ -262,17 +262,17 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       // t_end comes through sample(), as in the coupled integrator, so a run's samples are cut
       // into stretches the same way whatever its end (FanOut relies on it).
       const double t_stop = std::min(t_event, t_end);
-      const long long k_end = first_sample_at_or_after(t_stop, sample_dt, k);
+      const long long k = clock.index(), k_end = clock.first_at_or_after(t_stop);
       const long used = obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k),
                                           fa_.data(), fb_.data());
       if (used > 0) {
-        k += used;
-        s_.t = static_cast<double>(k - 1) * sample_dt;
+        clock.advance(used);
+        s_.t = clock.time_of(clock.index() - 1);
         continue;
       }
     }
     sample(t_sample);
-    ++k;
+    clock.advance();
   }
   const double t_stop = obs.wants_stop() ? s_.t : t_end;
   s_.t = t_stop;

@@ -1,4 +1,4 @@
-#include "springblock/integrate/switching.hpp"
+#include "springblock/integrate/events/switching.hpp"
 
 #include <cmath>
 #include <stdexcept>

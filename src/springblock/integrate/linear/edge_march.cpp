@@ -1,4 +1,4 @@
-#include "springblock/integrate/edge_march.hpp"
+#include "springblock/integrate/linear/edge_march.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "springblock/integrate/dopri5.hpp"
+#include "springblock/integrate/step/dopri5.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-#include "springblock/integrate/kernel_clones.hpp"
+#include "springblock/integrate/step/kernel_clones.hpp"
 
 namespace sb::event_detail {
 
@@ -62,12 +62,12 @@ SB_KERNEL_CLONES double span_error(int lo, int hi, double h, const double* __res
 }
 }  // namespace
 
-double Dopri5::error_norm(const std::vector<Span>& spans, const double* u, const double* v,
+double Dopri5::error_norm(const std::vector<BlockRange>& spans, const double* u, const double* v,
                           const double* mobile, double atol_u, double atol_v, double rtol) const {
   // Max norm over the moving components: stuck blocks carry no error, and an RMS over the
   // whole chain would dilute the error of the one block that slides.
   double worst = 0;
-  for (const Span& sp : spans) {
+  for (const BlockRange& sp : spans) {
     worst = std::max(worst, span_error(sp.lo, sp.hi, h_, k_[0], k_[2], k_[3], k_[4], k_[5], k_[6], u,
                                        u1_.data(), mobile, atol_u, rtol));
     worst = std::max(worst, span_error(sp.lo, sp.hi, h_, k_[7], k_[9], k_[10], k_[11], k_[12], k_[13], v,

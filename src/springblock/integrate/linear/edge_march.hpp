@@ -27,7 +27,7 @@
 // for a sign change only, and the provable skips start from the first grid point.
 #include <vector>
 
-#include "springblock/integrate/damped_mode.hpp"
+#include "springblock/integrate/linear/damped_mode.hpp"
 
 namespace sb::event_detail {
 

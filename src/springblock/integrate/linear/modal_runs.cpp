@@ -1,5 +1,5 @@
-#include "springblock/integrate/modal_runs.hpp"
-#include "springblock/integrate/run_stiffness.hpp"
+#include "springblock/integrate/linear/modal_runs.hpp"
+#include "springblock/integrate/linear/run_stiffness.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,76 @@
+// The event method's quiet phase: every contact block stuck, the grooves propagated exactly
+// (linear/quiet_phase.hpp) to the first threshold crossing, with the samples inside served from
+// the closed form. Exact, except that an observer of contact forces only gets groove modes below
+// the settle scales dropped (QuietPhase::set_sample_scales); once every groove has rung down the
+// observer may take the rest of the phase's samples as one affine stretch (sample_affine).
+#include <algorithm>
+
+#include "springblock/integrate/methods/event_run.hpp"
+
+namespace sb::event_detail {
+
+bool EventRun::quiet_phase() {
+  quiet_->begin(c_, s_.t, s_.u.data(), s_.v.data());
+  const auto next = quiet_->next_threshold(c_, t_end_);
+  // Contact blocks do not move in a quiet phase: copy them once, update the grooves per sample.
+  if (clock_.next() < next.t) {
+    std::copy(s_.u.begin(), s_.u.end(), sample_.u.begin());
+    std::copy(s_.v.begin(), s_.v.end(), sample_.v.begin());
+    std::copy(s_.dir.begin(), s_.dir.end(), sample_.dir.begin());
+  }
+  const double dead_after = quiet_->all_dead_after();
+  affine_ready_ = false;
+  while (clock_.next() < next.t) {
+    if (clock_.next() >= dead_after) {
+      bool stopped = false;
+      if (sample_affine_stretch(next.t, stopped)) {
+        if (stopped) return false;
+        continue;
+      }
+    }
+    sample_.t = clock_.next();
+    quiet_->sample(sample_.t, sample_.u.data(), sample_.v.data(), ends_only_);
+    stamp_sample();
+    obs_.sample(c_, sample_);
+    clock_.advance();
+    if (obs_.wants_stop()) {
+      quiet_->evaluate(sample_.t, s_.u.data(), s_.v.data());
+      s_.t = sample_.t;
+      return false;
+    }
+  }
+  quiet_->evaluate(next.t, s_.u.data(), s_.v.data());
+  s_.t = next.t;
+  if (next.block >= 0) sw_.flag(next.block);
+  if (sw_.settle(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
+  // Every groove is exact at s.t. Grooves settled before the quiet phase stay settled: their
+  // stuck ends have not moved, so their A + B t is still their path.
+  reclassify();
+  stage1_valid_ = false;
+  sample_if_due();
+  return true;
+}
+
+bool EventRun::sample_affine_stretch(double t_next, bool& stopped) {
+  if (!affine_ready_) {
+    quiet_->affine_forces(c_, s_.u.data(), fa_.data(), fb_.data());
+    affine_ready_ = true;
+  }
+  // Samples k dt < t_next, counted exactly as the clock will produce them.
+  const long long k0 = clock_.index(), k_end = clock_.first_at_or_after(t_next);
+  sample_.t = clock_.next();
+  stamp_sample();
+  const long used = obs_.sample_affine(c_, sample_, static_cast<long>(k0), clock_.dt(), static_cast<long>(k_end - k0),
+                                       fa_.data(), fb_.data());
+  if (used <= 0) return false;
+  clock_.advance(used);
+  if (obs_.wants_stop()) {
+    const double t_last = clock_.time_of(clock_.index() - 1);
+    quiet_->evaluate(t_last, s_.u.data(), s_.v.data());
+    s_.t = t_last;
+    stopped = true;
+  }
+  return true;
+}
+
+}  // namespace sb::event_detail

@@ -1,0 +1,98 @@
+#include "springblock/integrate/methods/event_run.hpp"
+
+#include <algorithm>
+
+namespace sb::event_detail {
+
+EventRun::EventRun(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, const EventOptions& opt)
+    : c_(c),
+      s_(s),
+      t_end_(t_end),
+      obs_(obs),
+      opt_(opt),
+      // An observer that reads only contact blocks' forces needs the groove segments' end rows
+      // at quiet-phase samples (O(N) per sample instead of O(sum n^2) for long grooves).
+      ends_only_(!obs.reads_groove_interiors()),
+      control_(c, opt.tol),
+      dp_(c.N),
+      search_(c.N),
+      sw_(c.N),
+      // Settled grooves are a form of fast-forward (they drop a transient below the tolerance),
+      // so they follow the same switch; the closed-form crossings of stuck blocks are exact
+      // either way.
+      active_(c, opt.fast_forward, control_.atol_u(), control_.atol_v(), opt.modal_max_run, opt.modal_max_groove,
+              t_end),
+      clock_(sample_dt, s.t),
+      sample_(s),
+      fa_(c.N),
+      fb_(c.N) {
+  active_.set_sample_dt(sample_dt);
+  if (opt.fast_forward) {
+    quiet_ = std::make_unique<QuietPhase>(c);
+    quiet_->set_sample_dt(sample_dt);
+    if (ends_only_) quiet_->set_sample_scales(active_.settle_eps_u(), active_.settle_eps_v());
+  }
+}
+
+void EventRun::reclassify() {
+  active_.rebuild(c_, s_, sw_.touched());
+  sw_.clear_touched();
+  dp_.set_frozen(s_.u.data());
+}
+
+// Only the exact runs the switch reads or re-projects are brought to s.t first, unless the
+// switch may stop every sliding block (only flagged blocks switch): a quiet phase begins from
+// the whole state. (Not after settling: that would overwrite the v = 0 of the blocks that just
+// stopped.)
+void EventRun::switch_now() {
+  if (static_cast<std::size_t>(sw_.n_sliding()) <= sw_.flagged().size())
+    active_.materialise(s_.t, s_.u.data(), s_.v.data());
+  else
+    active_.materialise_near(s_.t, s_.u.data(), s_.v.data(), sw_.flagged());
+  if (sw_.settle(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
+  reclassify();
+}
+
+void EventRun::take_step_end(const std::vector<BlockRange>& spans) {
+  for (const auto& sp : spans) {
+    std::copy(dp_.u1() + sp.lo, dp_.u1() + sp.hi, s_.u.begin() + sp.lo);
+    std::copy(dp_.v1() + sp.lo, dp_.v1() + sp.hi, s_.v.begin() + sp.lo);
+  }
+}
+
+void EventRun::sample_if_due() {
+  if (!clock_.due(s_.t)) return;
+  active_.materialise(s_.t, s_.u.data(), s_.v.data(), true, ends_only_);
+  obs_.sample(c_, s_);
+  clock_.advance();
+}
+
+// Everything but the kinematics that an observer reads from a sample: the work counters and how
+// many contact blocks have slid (the all-slipped end of loading). A stale count there once
+// deferred the end of loading to the next active phase that happened to hold a sample, so mu_s
+// depended on the sample spacing (test FirstPeak.EndOfLoadingDoesNotDependOnSampleSpacing).
+void EventRun::stamp_sample() {
+  sample_.steps = s_.steps, sample_.rhs_evals = s_.rhs_evals, sample_.switches = s_.switches;
+  sample_.n_slipped_once = s_.n_slipped_once;
+}
+
+void EventRun::jump_exact() {
+  const auto next = active_.next_crossing();
+  const double t_stop = std::min({clock_.next(), t_end_, next.t});
+  if (t_stop > s_.t) {
+    s_.t = t_stop;
+    ++s_.steps;  // one exact step (State::steps counts accepted steps, of any kind)
+  }
+  if (next.t <= s_.t) {
+    if (next.recheck) {
+      active_.recheck(c_, s_);
+    } else {
+      sw_.flag(next.block);
+      switch_now();
+    }
+  }
+  stage1_valid_ = false;
+  sample_if_due();
+}
+
+}  // namespace sb::event_detail
