@@ -32,6 +32,8 @@
 #include <vector>
 
 #include "springblock/integrate/block_range.hpp"
+#include "springblock/integrate/events/event_queue.hpp"
+#include "springblock/integrate/linear/affine_paths.hpp"
 #include "springblock/integrate/linear/modal_runs.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
@@ -59,7 +61,7 @@ class ActiveSet {
   enum Kind : std::uint8_t { kStuck = 0, kStepped = 1, kSettled = 2, kModal = 3 };
   Kind kind(int i) const { return static_cast<Kind>(kind_[i]); }
   // Displacement of a settled groove block at time t.
-  double settled_u(int i, double t) const { return A_[i] + B_[i] * t; }
+  double settled_u(int i, double t) const { return paths_.u(i, t); }
   // Displacement of a block in a modal run at time t.
   double modal_u(int i, double t) const { return modal_.u(i, t); }
 
@@ -83,12 +85,10 @@ class ActiveSet {
   // leave the stepped set. Returns true when the stepped set changed.
   bool retire_settled(const Chain& c, const State& s);
 
-  struct Next {
-    double t;   // earliest closed-form or modal event (infinity if none)
-    int block;  // its block (lowest index on a tie), -1 if none
-    bool recheck;  // not an event: a modal search was cut off here; call recheck() at t
-  };
-  Next next_crossing() const { return next_; }
+  // The earliest closed-form or modal event; with recheck set it is not an event: a modal
+  // search was cut off there, call recheck() at its time.
+  using Next = EventQueue::Next;
+  Next next_crossing() const { return events_.next(); }
   // At next_crossing().t with recheck set: continue that block's search from s.t.
   void recheck(const Chain& c, const State& s);
 
@@ -98,17 +98,18 @@ class ActiveSet {
     Kind kind;       // kStepped (active or ringing) or kSettled
     bool grooves;    // grooves only (never holds a contact block)
   };
-  // A, B of the groove run over [lo, hi) held by stuck blocks (or free ends) at its boundaries.
-  void particular(const Chain& c, const State& s, BlockRange r);
-  // The particular solution is linear in the two boundary positions:
-  //   B = K^-1 K_s v 1,  A = K^-1 (-m gamma B) + u_left K_int K^-1 e_1 + u_right K_int K^-1 e_n,
-  // and K depends only on the run's length and whether each end is held. Solved once per shape.
-  struct Shape {
-    std::vector<double> B, a0, gL, gR;
-  };
-  const Shape& shape(const Chain& c, int n, bool left, bool right);
-  std::map<std::tuple<int, bool, bool>, Shape> shapes_;
   bool settled_now(const State& s, BlockRange r) const;
+  // The steps of rebuild(): the maximal runs of mobile blocks; their kinds; the modal runs'
+  // projections; the blocks whose event time may have changed; their new event times.
+  void find_runs(const Chain& c, const State& s);
+  void classify_runs(const Chain& c, const State& s, const std::uint8_t* touched);
+  void project_modal(const Chain& c, const State& s, const std::uint8_t* touched);
+  void collect_candidates(const State& s, const std::uint8_t* touched);
+  void update_events(const Chain& c, const State& s, const std::uint8_t* touched);
+  // Block i (or nothing, outside the chain) switched since the last rebuild.
+  bool switched(const State& s, const std::uint8_t* touched, int i) const;
+  // Nothing in r or beside it switched.
+  bool untouched(const State& s, const std::uint8_t* touched, BlockRange r) const;
   // Fill stepped_ and watched_ from runs_.
   void list_stepped(const State& s);
   // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
@@ -120,13 +121,9 @@ class ActiveSet {
   bool any_modal() const { return modal_max_ > 0 || modal_max_groove_ > 0; }
   // Modal event search of block i up to limit (stop if sliding, threshold crossing if stuck).
   void search_modal(const Chain& c, const State& s, int i, double limit);
-  // refresh_next, then the pending modal searches, each limited by the earliest event so far.
+  // Refresh the event queue, then the pending modal searches, each limited by the earliest
+  // event so far.
   void finish_events(const Chain& c, const State& s);
-  void refresh_next();
-  // Every write of an event time goes through here (marks the block for refresh_next).
-  void set_cross(int i, double t, bool recheck);
-  bool earlier(int a, int b) const;       // event order of blocks a, b (-1: none)
-  bool earlier_real(int a, int b) const;  // the same ignoring rechecks
 
   int N_;
   double K_int_;
@@ -142,21 +139,13 @@ class ActiveSet {
   std::vector<Run> runs_;
   std::vector<BlockRange> stepped_;
   std::vector<int> watched_;
-  std::vector<double> A_, B_;          // per block, valid in groove runs
-  std::vector<double> t_cross_;        // per contact block: next closed-form or modal event (inf if none / watched)
-  std::vector<std::uint8_t> recheck_;  // per block: t_cross_ is where a modal search was cut off
+  AffinePaths paths_;                  // settled and just-classified groove runs' A + B t
+  EventQueue events_;                  // per contact block: next closed-form or modal event (inf if none / watched)
   std::vector<std::uint8_t> fresh_;    // per block: in a modal run projected afresh at this rebuild
   std::vector<int> pending_;           // blocks whose modal search is due
   std::vector<int> done_;              // materialise_near: modal runs written (first blocks)
   std::vector<int> cand_;              // rebuild: blocks whose event time may have changed
   std::vector<int> ringing_;           // runs_ indices of stepped grooves-only runs (list_stepped)
-  int P_ = 1;                          // leaves of the event trees (a power of two >= N)
-  std::vector<int> tree_, tree_real_;  // tournament trees: node -> block (-1: none)
-  std::vector<std::uint8_t> dirty_;    // per block: event time changed since refresh_next
-  std::vector<int> dirty_list_;
-  std::vector<double> diag_, off_, rhs_;  // tridiagonal work arrays
-  Next next_{0, -1, false};
-  double next_event_t_ = 0;  // earliest real event (rechecks excluded)
   bool first_ = true;        // the first rebuild computes every event time
 };
 

@@ -4,9 +4,14 @@
 // with C, S the cos / sin-over-frequency pair of s = omega^2 - alpha^2 (cosh / sinh when the mode
 // is overdamped, s < 0; 1 and tau at critical damping). One formula covers gamma = 0,
 // underdamped, critical and overdamped modes without dividing by a vanishing frequency.
+#include <array>
 #include <cmath>
 
 namespace sb::event_detail {
+
+// The state transition of a mode over a fixed interval dt, row-major:
+//   (q, q')(tau + dt) = [[P0, P1], [P2, P3]] (q, q')(tau).
+using Transition = std::array<double, 4>;
 
 struct DampedMode {
   double alpha = 0;   // gamma / 2 [1/s]
@@ -37,6 +42,14 @@ struct DampedMode {
     const double P = p0 + alpha * q0;
     q = q0 * eC + P * eS;
     qd = -alpha * q + (P * eC - s * q0 * eS);
+  }
+
+  // The transition over dt: its columns are the solutions from (1, 0) and from (0, 1).
+  Transition transition(double dt) const {
+    Transition P;
+    eval(1.0, 0.0, dt, P[0], P[2]);
+    eval(0.0, 1.0, dt, P[1], P[3]);
+    return P;
   }
 };
 

@@ -127,31 +127,33 @@ double EdgeMarch::envelope_skip(double aff, double mb, double fs) const {
   return inside ? affine_reach(aff, b_, room) : 0.0;
 }
 
-double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0) {
-  // Shrink a bracket with gap g = fs - measure(F) > 0 at lo and <= 0 at hi to round-off in t;
-  // returns the crossed end. Regula falsi with the Illinois modification (the retained end's
-  // gap is halved when the same end is kept twice), falling back to bisection whenever the
-  // secant point is not well inside: the bracket is kept at every iteration, and a smooth gap
-  // needs ~10 direct evaluations instead of ~50 for plain bisection.
-  auto refine = [&](double lo, double glo, double hi, double ghi) {
-    int kept = 0;  // +1: lo kept last time, -1: hi kept last time
-    for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(t0 + hi); ++it) {
-      double mid = hi - ghi * (hi - lo) / (ghi - glo);
-      const double w = hi - lo;
-      if (!(mid > lo + 1e-3 * w && mid < hi - 1e-3 * w)) mid = 0.5 * (lo + hi);
-      const double gm = fs - measure(force(q0, p0, mid));
-      if (gm > 0) {
-        lo = mid, glo = gm;
-        if (kept == -1) ghi *= 0.5;
-        kept = -1;
-      } else {
-        hi = mid, ghi = gm;
-        if (kept == 1) glo *= 0.5;
-        kept = 1;
-      }
+// Shrink a bracket with gap g = fs - measure(F) > 0 at lo and <= 0 at hi to round-off in t;
+// returns the crossed end. Regula falsi with the Illinois modification (the retained end's gap
+// is halved when the same end is kept twice), falling back to bisection whenever the secant
+// point is not well inside: the bracket is kept at every iteration, and a smooth gap needs ~10
+// direct evaluations instead of ~50 for plain bisection.
+double EdgeMarch::refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
+                         double ghi) {
+  int kept = 0;  // +1: lo kept last time, -1: hi kept last time
+  for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(t0 + hi); ++it) {
+    double mid = hi - ghi * (hi - lo) / (ghi - glo);
+    const double w = hi - lo;
+    if (!(mid > lo + 1e-3 * w && mid < hi - 1e-3 * w)) mid = 0.5 * (lo + hi);
+    const double gm = fs - measure(force(q0, p0, mid));
+    if (gm > 0) {
+      lo = mid, glo = gm;
+      if (kept == -1) ghi *= 0.5;
+      kept = -1;
+    } else {
+      hi = mid, ghi = gm;
+      if (kept == 1) glo *= 0.5;
+      kept = 1;
     }
-    return hi;
-  };
+  }
+  return hi;
+}
+
+double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0) {
   double tau = 0;
   direct(q0, p0, 0.0);
   Sums S = sums(0.0);
@@ -198,12 +200,12 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
     }
     const Sums S1 = sums(t1);
     // At an open origin the gap is ~0 (on the threshold): bisection's end there is lo itself.
-    if (measure(S1.F) >= fs) return refine(tau, open ? fs : fs - measure(S.F), t1, fs - measure(S1.F));
+    if (measure(S1.F) >= fs) return refine(q0, p0, fs, t0, tau, open ? fs : fs - measure(S.F), t1, fs - measure(S1.F));
     if (!open && std::max(measure(S.F), measure(S1.F)) + 0.125 * S.m2 * H_ * H_ >= fs) {
       budget_ = kGrazeBudget;
       double where = 0;
       const bool hit = graze(q0, p0, fs, tau, S.F, t1, S1.F, S.m2, 0, where);
-      if (hit) return refine(tau, fs - measure(S.F), where, fs - measure(force(q0, p0, where)));
+      if (hit) return refine(q0, p0, fs, t0, tau, fs - measure(S.F), where, fs - measure(force(q0, p0, where)));
       direct(q0, p0, t1);  // the grazing search moved the mode state: restore it at t1
       since_sync = 0;
     }

@@ -85,6 +85,9 @@ class EdgeMarch {
   // A skip that provably passes no crossing: the time until the affine part at tau (aff) comes
   // within the modal bound mb of the threshold (0 if it already is).
   double envelope_skip(double aff, double mb, double fs) const;
+  // Bracket refinement of first_crossing: the crossed end of [lo, hi] to round-off in t.
+  double refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
+                double ghi);
   bool graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi, double Fhi,
              double m2, int depth, double& where);
 

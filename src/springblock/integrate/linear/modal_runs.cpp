@@ -1,5 +1,4 @@
 #include "springblock/integrate/linear/modal_runs.hpp"
-#include "springblock/integrate/linear/run_stiffness.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,11 +14,6 @@ constexpr int kResync = 64;
 // Round-off margin of a stop, in units of the slider velocity (see the header).
 constexpr double kStopMargin = 1e-12;
 
-void transition(const DampedMode& m, double dt, std::array<double, 4>& P) {
-  m.eval(1.0, 0.0, dt, P[0], P[2]);  // column 1: from (q, qd) = (1, 0)
-  m.eval(0.0, 1.0, dt, P[1], P[3]);  // column 2: from (0, 1)
-}
-
 }  // namespace
 
 ModalRuns::ModalRuns(const Chain& c)
@@ -29,6 +23,7 @@ ModalRuns::ModalRuns(const Chain& c)
       // One grid step for every run: the fastest mode any run can have is below
       // sqrt((K_s + 4 K_int) / m), so the per-mode transitions are computed once per basis.
       H_(EdgeMarch::grid_step(std::sqrt((c.K_s + 4.0 * c.K_int) / c.m))),
+      modes_(c),
       run_of_(c.N, -1),
       A_(c.N),
       B_(c.N),
@@ -45,29 +40,23 @@ ModalRuns::ModalRuns(const Chain& c)
 
 void ModalRuns::set_sample_dt(double dt) {
   sample_dt_ = dt;
-  for (auto& [key, b] : bases_)
-    for (std::size_t k = 0; k < b.modes.size(); ++k) transition(b.modes[k], dt, b.sample[k]);
+  modes_.set_sample_dt(dt);
 }
 
 const ModalRuns::Basis& ModalRuns::basis(const Chain& c, int n, bool left, bool right) {
   const auto key = std::make_tuple(n, left, right);
   auto it = bases_.find(key);
   if (it != bases_.end()) return it->second;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(run_stiffness(c.K_s, K_int_, n, left, right));
   Basis b;
-  b.Q = es.eigenvectors();
-  const Eigen::VectorXd& lambda = es.eigenvalues();
-  b.grid.resize(n), b.sample.resize(n);
-  for (int k = 0; k < n; ++k) {
-    b.modes.push_back({0.5 * c.gamma, lambda[k] / c.m});
-    transition(b.modes[k], H_, b.grid[k]);
-    if (sample_dt_ > 0) transition(b.modes[k], sample_dt_, b.sample[k]);
-  }
+  b.run = &modes_.get(n, left, right);
+  const Eigen::MatrixXd& Q = b.run->Q;
+  const Eigen::VectorXd& lambda = b.run->lambda;
+  for (int k = 0; k < n; ++k) b.grid.push_back(b.run->modes[k].transition(H_));
   // K^-1 x = Q diag(1/lambda) Q^T x for the pieces of the particular solution that depend only
   // on the run's shape: B from the slider, a0 from the damping of B, gL / gR per unit position
   // of the stuck neighbour on either side.
   auto solve = [&](const Eigen::VectorXd& x) {
-    const Eigen::VectorXd y = b.Q * (b.Q.transpose() * x).cwiseQuotient(lambda);
+    const Eigen::VectorXd y = Q * (Q.transpose() * x).cwiseQuotient(lambda);
     return std::vector<double>(y.data(), y.data() + n);
   };
   b.B = solve(Eigen::VectorXd::Constant(n, c.K_s * c.v_slider));
@@ -102,7 +91,7 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     rhs_[r] = s.dir[lo + r] * c.f_kinetic[lo + r];
     friction = friction || rhs_[r] != 0.0;
   }
-  Eigen::Map<const Eigen::MatrixXd> Q(b.Q.data(), n, n);
+  Eigen::Map<const Eigen::MatrixXd> Q(b.run->Q.data(), n, n);
   Eigen::VectorXd fk_modal;
   if (friction) fk_modal = Q.transpose() * Eigen::Map<const Eigen::VectorXd>(rhs_.data(), n);
   for (int r = 0; r < n; ++r) {
@@ -110,7 +99,7 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     A_[lo + r] = b.a0[r] + uL * b.gL[r] + uR * b.gR[r];
   }
   if (friction) {
-    for (int k = 0; k < n; ++k) fk_modal[k] /= b.modes[k].omega2 * c.m;
+    for (int k = 0; k < n; ++k) fk_modal[k] /= b.run->modes[k].omega2 * c.m;
     for (int r = 0; r < n; ++r) A_[lo + r] -= Q.row(r).dot(fk_modal);
   }
   // Modal coordinates of the deviation from u_p at s.t, and each mode's acceleration (the
@@ -124,7 +113,7 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     }
     q0_[lo + k] = qk;
     p0_[lo + k] = pk;
-    acc0_[lo + k] = -c.gamma * pk - b.modes[k].omega2 * qk;
+    acc0_[lo + k] = -c.gamma * pk - b.run->modes[k].omega2 * qk;
   }
   Run run{lo, hi, &b, s.t, s.t, 0, false, true, grooves};
   if (grooves) run.quiet_after = s.t + envelope_time(run);
@@ -146,7 +135,7 @@ double ModalRuns::envelope_time(const Run& r) const {
   if (!(eps_u_ > 0) || !(eps_vq_ > 0)) return std::numeric_limits<double>::infinity();
   double su = 0, sv = 0, alpha = 0;
   for (int k = 0; k < r.hi - r.lo; ++k) {
-    const DampedMode& m = r.basis->modes[k];
+    const DampedMode& m = r.basis->run->modes[k];
     const double s = m.omega2 - m.alpha * m.alpha;
     // No bound for undamped or nearly critical modes: the run stays modal (exact) instead.
     if (!(m.alpha > 0) || !(s > 0.25 * m.omega2)) return std::numeric_limits<double>::infinity();
@@ -170,7 +159,7 @@ void ModalRuns::end() {
 
 void ModalRuns::coords(const Run& r, double t, double* q, double* qd) const {
   const double tau = t - r.t0;
-  for (int k = 0; k < r.hi - r.lo; ++k) r.basis->modes[k].eval(q0_[r.lo + k], p0_[r.lo + k], tau, q[k], qd[k]);
+  for (int k = 0; k < r.hi - r.lo; ++k) r.basis->run->modes[k].eval(q0_[r.lo + k], p0_[r.lo + k], tau, q[k], qd[k]);
 }
 
 double ModalRuns::u(int i, double t) const {
@@ -180,8 +169,8 @@ double ModalRuns::u(int i, double t) const {
   double x = A_[i] + B_[i] * t;
   for (int k = 0; k < n; ++k) {
     double q, qd;
-    r.basis->modes[k].eval(q0_[r.lo + k], p0_[r.lo + k], tau, q, qd);
-    x += r.basis->Q(row, k) * q;
+    r.basis->run->modes[k].eval(q0_[r.lo + k], p0_[r.lo + k], tau, q, qd);
+    x += r.basis->run->Q(row, k) * q;
   }
   return x;
 }
@@ -192,8 +181,8 @@ void ModalRuns::rows(const Run& r, double t, const double* q, const double* qd, 
   for (int row = r0; row < r1; row += dr) {
     double x = A_[r.lo + row] + B_[r.lo + row] * t, y = B_[r.lo + row];
     for (int k = 0; k < n; ++k) {
-      x += r.basis->Q(row, k) * q[k];
-      y += r.basis->Q(row, k) * qd[k];
+      x += r.basis->run->Q(row, k) * q[k];
+      y += r.basis->run->Q(row, k) * qd[k];
     }
     u[r.lo + row] = x;
     v[r.lo + row] = y;
@@ -211,7 +200,7 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool
                       std::fabs((t - r.tc) - sample_dt_) <= 1e-9 * sample_dt_ && r.since + 1 < kResync;
     if (step) {
       for (int k = 0; k < n; ++k) {
-        const auto& P = r.basis->sample[k];
+        const auto& P = r.basis->run->sample[k];
         const double a = q[k], b = qd[k];
         q[k] = P[0] * a + P[1] * b;
         qd[k] = P[2] * a + P[3] * b;
@@ -249,11 +238,11 @@ ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, boo
   march_.reset();
   for (int k = 0; k < n; ++k) {
     const int slot = r.lo + k;
-    const DampedMode& m = r.basis->modes[k];
+    const DampedMode& m = r.basis->run->modes[k];
     vq_[slot] = cp_[slot];
     va_[slot] = -c.gamma * cp_[slot] - m.omega2 * cq_[slot];
-    v += r.basis->Q(row, k) * cp_[slot];
-    march_.add_mode(-dir * r.basis->Q(row, k), m, slot, r.basis->grid[k].data());
+    v += r.basis->run->Q(row, k) * cp_[slot];
+    march_.add_mode(-dir * r.basis->run->Q(row, k), m, slot, r.basis->grid[k].data());
   }
   march_.finish(H_);
   march_.set_affine(0.0, 0.0);
@@ -281,7 +270,7 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
     coords(r, s.t, cq_.data() + r.lo, cp_.data() + r.lo);
     a += K_int_ * (A_[nb] + B_[nb] * s.t - s.u[j]);
     b += K_int_ * B_[nb];
-    for (int k = 0; k < n; ++k) march_.add_mode(K_int_ * r.basis->Q(row, k), r.basis->modes[k], r.lo + k, r.basis->grid[k].data());
+    for (int k = 0; k < n; ++k) march_.add_mode(K_int_ * r.basis->run->Q(row, k), r.basis->run->modes[k], r.lo + k, r.basis->grid[k].data());
   }
   march_.finish(H_);
   march_.set_affine(a, b);

@@ -29,6 +29,7 @@
 
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
+#include "springblock/integrate/linear/run_basis.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 
@@ -93,9 +94,8 @@ class ModalRuns {
 
  private:
   struct Basis {
-    Eigen::MatrixXd Q;  // columns: orthonormal modes of K
-    std::vector<DampedMode> modes;
-    std::vector<std::array<double, 4>> grid, sample;  // transitions over the march grid and sample spacing
+    const RunBasis* run;             // the run shape's modes (shared cache)
+    std::vector<Transition> grid;    // per mode: transition over the march grid
     std::vector<double> B, a0, gL, gR;  // particular solution pieces (see add())
   };
   struct Run {
@@ -120,6 +120,7 @@ class ModalRuns {
   int N_;
   double K_int_, eps_v_, H_, sample_dt_ = 0;
   double eps_u_ = 0, eps_vq_ = 0;  // quiet scales (set_quiet_scales)
+  RunBases modes_;
   std::map<std::tuple<int, bool, bool>, Basis> bases_;
   std::vector<Run> runs_;
   std::vector<int> run_of_;                  // block -> index in runs_ (-1: not in a modal run)

@@ -10,7 +10,7 @@
 // K_seg are damped oscillators solved in closed form (damped_mode.hpp).
 //
 // K_seg depends only on (length, left kind, right kind), so its eigendecomposition is computed
-// once per distinct key and shared by all grooves of a periodic pattern. Since the contact
+// once per distinct key and shared by all grooves of a periodic pattern (run_basis.hpp). Since the contact
 // mask is fixed, the segments are found once per run; a quiet phase only recomputes A, B and the
 // modal initial conditions.
 //
@@ -30,6 +30,7 @@
 
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
+#include "springblock/integrate/linear/run_basis.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
@@ -58,7 +59,7 @@ class QuietPhase {
   // The first threshold crossing in (t0, t_limit].
   Next next_threshold(const Chain& c, double t_limit);
 
-  int distinct_decompositions() const { return static_cast<int>(decomps_.size()); }
+  int distinct_decompositions() const { return bases_.size(); }
 
   // Samples for an observer of contact forces only (sample() with ends_only, sample_affine) drop a
   // segment's modes once every row's transient is below eps_u in u and eps_v in v: the active
@@ -76,17 +77,10 @@ class QuietPhase {
   void affine_forces(const Chain& c, const double* u, double* a, double* b) const;
 
  private:
-  struct Decomp {
-    Eigen::MatrixXd Q;  // columns: orthonormal modes of K_seg
-    Eigen::VectorXd lambda;
-    std::vector<DampedMode> modes;
-    std::vector<double> s00, s01, s10, s11;  // per mode: transition over the sample spacing
-    // Q's first and last rows, contiguous: a sample of a contact-force observer reads only the
-    // groove's end rows, and Q is stored by column (a row is strided by n).
-    std::vector<double> first_row, last_row;
-  };
   struct Segment {
-    int first, n, decomp, offset;  // offset into the flat per-phase arrays
+    int first, n;
+    const RunBasis* basis;
+    int offset;  // into the flat per-phase arrays
     bool left_stuck, right_stuck;
     double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
     double sample_dead_tau = 0;  // after this they are below the sample scales (samples skip them)
@@ -101,6 +95,10 @@ class QuietPhase {
     double lower = 0;  // lower bound on its crossing in the current phase
   };
 
+  // begin()'s work per segment: the particular solution and the modal coordinates of the
+  // deviation from it; the times after which the modes no longer count.
+  void project(const Chain& c, const Segment& s, const double* u, const double* v);
+  void set_dead_times(const Chain& c, Segment& s) const;
   // u, v of segment s at absolute time t from its modal coordinates q, qd.
   void to_physical(const Segment& s, double t, bool live, const double* q, const double* qd, double* u,
                    double* v) const;
@@ -109,8 +107,7 @@ class QuietPhase {
                        double* v) const;
 
   double K_int_ = 0, t0_ = 0;
-  std::vector<Decomp> decomps_;
-  std::map<std::tuple<int, int, int>, int> cache_;  // (n, left kind, right kind) -> decomps_ index
+  RunBases bases_;
   std::vector<Segment> segs_;
   std::vector<Edge> edges_;
   std::vector<int> affine_blocks_;     // contact blocks with no groove neighbour

@@ -1,0 +1,148 @@
+// The active set's exact events: after a classification, the next event time of every contact
+// block whose surroundings changed (a stuck block's closed-form or modal threshold crossing, a
+// modal sliding block's stop), kept in the EventQueue.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "springblock/integrate/events/active_set.hpp"
+
+namespace sb::event_detail {
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+// Closed-form crossings and the kept modal events first, then the fresh modal searches
+// (finish_events).
+void ActiveSet::update_events(const Chain& c, const State& s, const std::uint8_t* touched) {
+  pending_.clear();
+  collect_candidates(s, touched);
+  for (int i : cand_) {
+    if (!c.contact[i] || (s.dir[i] != 0 && kind_[i] != kModal)) {
+      events_.set(i, kInf, false);
+    } else if (s.dir[i] != 0) {
+      if (fresh_[i]) events_.set(i, kInf, false), pending_.push_back(i);
+    } else {
+      // A stuck block keeps its event time unless something next to it changed: it does not
+      // move, nor do its stuck neighbours, and a settled or kept modal neighbour follows the
+      // same path as when the time was found.
+      bool changed = first_ || switched(s, touched, i) || switched(s, touched, i - 1) ||
+                     switched(s, touched, i + 1) || kind_prev_[i] != kStuck;
+      for (int j : {i - 1, i + 1})
+        if (j >= 0 && j < N_) changed = changed || kind_[j] != kind_prev_[j] || fresh_[j];
+      if (changed && !refresh_stuck(c, s, i)) pending_.push_back(i);
+    }
+  }
+  std::copy(s.dir.begin(), s.dir.end(), dir_prev_.begin());
+  first_ = false;
+  finish_events(c, s);
+}
+
+bool ActiveSet::beside_modal(int i) const {
+  return K_int_ > 0 && ((i > 0 && kind_[i - 1] == kModal) || (i + 1 < N_ && kind_[i + 1] == kModal));
+}
+
+bool ActiveSet::refresh_stuck(const Chain& c, const State& s, int i) {
+  if (K_int_ > 0)
+    for (int j : {i - 1, i + 1})
+      if (j >= 0 && j < N_ && kind_[j] == kStepped) {
+        events_.set(i, kInf, false);  // watched: the step's dense output finds its crossing
+        return true;
+      }
+  if (beside_modal(i)) {
+    events_.set(i, kInf, false);  // searched by finish_events
+    return false;
+  }
+  update_crossing(c, s, i);
+  return true;
+}
+
+void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit) {
+  ModalRuns::Found f;
+  if (s.dir[i] != 0) {
+    f = modal_.stop_time(c, s, i, fresh_[i] != 0, limit);
+  } else {
+    double base[2] = {0, 0}, nb_B[2] = {0, 0};
+    for (int side = 0; side < 2; ++side) {
+      const int j = side == 0 ? i - 1 : i + 1;
+      if (j < 0 || j >= N_) continue;
+      if (kind_[j] == kSettled) base[side] = settled_u(j, s.t), nb_B[side] = paths_.drift(j);
+      else base[side] = s.u[j];
+    }
+    f = modal_.crossing_time(c, s, i, base, nb_B, limit);
+  }
+  // Cut off at the limit: search again from there if it ever becomes the next event.
+  events_.set(i, std::isfinite(f.t) ? f.t : f.limited ? limit : kInf, !std::isfinite(f.t) && f.limited);
+}
+
+void ActiveSet::finish_events(const Chain& c, const State& s) {
+  // Each fresh modal search goes only as far as the earliest event known so far: most of them
+  // never become the next event, and one cut off is searched again when it does (recheck()).
+  events_.refresh();
+  for (int i : pending_) {
+    // Limited by the earliest real event (not a recheck), so a recheck always makes progress.
+    search_modal(c, s, i, std::min(events_.next_real(), t_end_));
+    events_.offer(i);
+  }
+  pending_.clear();
+}
+
+void ActiveSet::recheck(const Chain& c, const State& s) {
+  const int i = events_.next().block;
+  events_.set(i, kInf, false);
+  fresh_[i] = 0;
+  pending_.assign(1, i);
+  finish_events(c, s);
+}
+
+void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
+  double a = c.K_s * (c.v_slider * s.t - s.u[i]), b = c.K_s * c.v_slider;
+  if (K_int_ > 0) {
+    for (int j : {i - 1, i + 1}) {
+      if (j < 0 || j >= N_) continue;
+      if (kind_[j] == kStepped) {  // watched instead: its force is not affine
+        events_.set(i, kInf, false);
+        return;
+      }
+      if (kind_[j] == kSettled) {
+        a += K_int_ * (settled_u(j, s.t) - s.u[i]);
+        b += K_int_ * paths_.drift(j);
+      } else {
+        a += K_int_ * (s.u[j] - s.u[i]);
+      }
+    }
+  }
+  // First time a + b tau reaches +-f_static. b = 0 (nothing loads it) never crosses.
+  const double f = c.f_static[i];
+  if (b == 0.0) {
+    events_.set(i, kInf, false);
+    return;
+  }
+  const double tau = ((b > 0 ? f : -f) - a) / b;
+  events_.set(i, s.t + std::max(tau, 0.0), false);
+}
+
+bool ActiveSet::retire_settled(const Chain& c, const State& s) {
+  if (!settle_grooves_) return false;
+  bool changed = false;
+  for (int k : ringing_) {
+    Run& r = runs_[k];
+    if (!settled_now(s, r.span)) continue;
+    r.kind = kSettled;
+    for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = kSettled;
+    changed = true;
+  }
+  if (!changed) return false;
+  list_stepped(s);
+  // The stuck blocks beside a newly settled run may now have an affine force.
+  for (const Run& r : runs_) {
+    if (r.kind != kSettled) continue;
+    for (int i : {r.span.lo - 1, r.span.hi})
+      if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && events_.time(i) == kInf && !refresh_stuck(c, s, i))
+        pending_.push_back(i);
+  }
+  finish_events(c, s);
+  return true;
+}
+
+}  // namespace sb::event_detail

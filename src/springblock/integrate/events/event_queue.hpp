@@ -1,0 +1,54 @@
+#pragma once
+// The next exact event of the active set: per block, the time of its next closed-form or modal
+// event (a stuck block's threshold crossing, a modal block's stop), or where a modal search was
+// cut off (a "recheck": not an event, the search continues from there when it comes up).
+//
+// Two tournament trees over the blocks (earliest entry; earliest real event, rechecks
+// excluded) are brought up to date for the blocks whose time changed since the last refresh:
+// O(changed log N) per switch, not O(N). Ties go as a full scan in block order would take them:
+// earliest t, then a real event before a recheck, then the lower block.
+#include <cstdint>
+#include <vector>
+
+namespace sb::event_detail {
+
+class EventQueue {
+ public:
+  struct Next {
+    double t;      // earliest entry (infinity if none)
+    int block;     // its block (lowest index on a tie), -1 if none
+    bool recheck;  // not an event: a modal search was cut off here
+  };
+
+  explicit EventQueue(int N);
+
+  // Every write of an event time goes through here (marks the block for refresh()).
+  void set(int i, double t, bool recheck);
+  double time(int i) const { return t_[i]; }
+  bool is_recheck(int i) const { return recheck_[i] != 0; }
+
+  // Bring the trees up to date with every set() since the last refresh.
+  void refresh();
+  // Take block i's entry, set after refresh(), into next() and next_real() at once (the trees
+  // see it at the next refresh).
+  void offer(int i);
+
+  Next next() const { return next_; }
+  double next_real() const { return next_real_; }  // earliest real event (rechecks excluded)
+
+ private:
+  bool earlier(int a, int b) const;       // entry order of blocks a, b (-1: none)
+  bool earlier_real(int a, int b) const;  // the same ignoring rechecks
+
+  int N_;
+  int P_ = 1;                          // leaves of the trees (a power of two >= N)
+  std::vector<double> t_;              // per block: its entry (infinity if none)
+  std::vector<std::uint8_t> recheck_;  // per block: the entry is a cut-off modal search
+  std::vector<int> tree_, tree_real_;  // node -> block (-1: none)
+  std::vector<std::uint8_t> dirty_;    // per block: entry changed since refresh()
+  std::vector<int> dirty_list_;
+  Next next_{0, -1, false};
+  double next_real_ = 0;
+};
+
+}  // namespace sb::event_detail

@@ -1,0 +1,117 @@
+// The quiet phase's output: the grooves' exact u, v at a time (evaluate) and at the samples
+// inside the phase (sample), from the modal solution begun by QuietPhase::begin.
+#include <algorithm>
+#include <cmath>
+
+#include "springblock/integrate/linear/quiet_phase.hpp"
+
+namespace sb::event_detail {
+
+void QuietPhase::to_physical(const Segment& s, double t, bool live, const double* q, const double* qd,
+                             double* u, double* v) const {
+  const RunBasis& d = *s.basis;
+  for (int r = 0; r < s.n; ++r) {
+    u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t;
+    v[s.first + r] = B_[s.offset + r];
+  }
+  if (!live) return;
+  // Column-major Q: accumulate mode by mode so the inner loop runs down a contiguous column.
+  for (int k = 0; k < s.n; ++k) {
+    const double* col = d.Q.data() + static_cast<std::ptrdiff_t>(k) * s.n;
+    const double qk = q[k], qdk = qd[k];
+    double* uu = u + s.first;
+    double* vv = v + s.first;
+    for (int r = 0; r < s.n; ++r) {
+      uu[r] += col[r] * qk;
+      vv[r] += col[r] * qdk;
+    }
+  }
+}
+
+void QuietPhase::row_to_physical(const Segment& s, int r, double t, const double* q, const double* qd,
+                                 double* u, double* v) const {
+  const RunBasis& d = *s.basis;
+  double du = 0, dv = 0;
+  if (q != nullptr) {
+    // Row r of Q (stored by column: stride n), or the contiguous copy of an end row; the same
+    // products summed in the same order either way.
+    const bool end_row = r == 0 || r == s.n - 1;
+    const double* row = r == 0 ? d.first_row.data() : r == s.n - 1 ? d.last_row.data() : d.Q.data() + r;
+    const int stride = end_row ? 1 : s.n;
+    for (int k = 0; k < s.n; ++k) {
+      du += row[k * stride] * q[k];
+      dv += row[k * stride] * qd[k];
+    }
+  }
+  u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t + du;
+  v[s.first + r] = B_[s.offset + r] + dv;
+}
+
+void QuietPhase::evaluate(double t, double* u, double* v) const {
+  const double tau = t - t0_;
+  double q[64], qd[64];  // modes evaluated in blocks of 64: no allocation
+  for (const Segment& s : segs_) {
+    const RunBasis& d = *s.basis;
+    const bool live = tau <= s.dead_tau;
+    to_physical(s, t, false, nullptr, nullptr, u, v);
+    if (!live) continue;
+    for (int k0 = 0; k0 < s.n; k0 += 64) {
+      const int k1 = std::min(s.n, k0 + 64);
+      for (int k = k0; k < k1; ++k)
+        d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q[k - k0], qd[k - k0]);
+      for (int k = k0; k < k1; ++k) {
+        const double* col = d.Q.data() + static_cast<std::ptrdiff_t>(k) * s.n;
+        for (int r = 0; r < s.n; ++r) {
+          u[s.first + r] += col[r] * q[k - k0];
+          v[s.first + r] += col[r] * qd[k - k0];
+        }
+      }
+    }
+  }
+}
+
+void QuietPhase::set_sample_dt(double dt) {
+  sample_dt_ = dt;
+  bases_.set_sample_dt(dt);
+}
+
+void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
+  const double tau = t - t0_;
+  // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
+  // from that by round-off only. Restart from the closed form every 64 samples regardless.
+  const bool step = sample_valid_ && sample_dt_ > 0 && std::fabs((t - ts_) - sample_dt_) <= 1e-9 * sample_dt_ &&
+                    ++since_sync_ < 64;
+  if (!step) since_sync_ = 0;
+  for (const Segment& s : segs_) {
+    // An observer that reads only contact forces (ends_only) takes the modes as gone once they
+    // are below the settle scales; one that reads every row gets them to round-off.
+    const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
+    double* q = qs_.data() + s.offset;
+    double* qd = qds_.data() + s.offset;
+    if (live) {
+      const RunBasis& d = *s.basis;
+      if (step) {
+        for (int k = 0; k < s.n; ++k) {
+          const double a = q[k], b = qd[k];
+          const Transition& P = d.sample[k];
+          q[k] = P[0] * a + P[1] * b;
+          qd[k] = P[2] * a + P[3] * b;
+        }
+      } else {
+        for (int k = 0; k < s.n; ++k) d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q[k], qd[k]);
+      }
+    }
+    if (ends_only) {
+      // Interior rows are left as they are: the caller's observer does not read them.
+      const double* lq = live ? q : nullptr;  // dead modes: the affine part alone
+      if (s.left_stuck) row_to_physical(s, 0, t, lq, qd, u, v);
+      if (s.right_stuck) row_to_physical(s, s.n - 1, t, lq, qd, u, v);
+    } else {
+      to_physical(s, t, live, q, qd, u, v);
+    }
+  }
+  ts_ = t;
+  sample_valid_ = true;
+}
+
+}  // namespace sb::event_detail

@@ -1,0 +1,51 @@
+#pragma once
+// The modes of a run: n consecutive mobile blocks between stuck blocks or chain ends, all in the
+// same state, move as
+//   m u'' + m gamma u' + K u = (load affine in t),
+// K the run's stiffness matrix (run_stiffness.hpp). Around an affine particular solution
+// (affine_paths.hpp, or the modal one of modal_runs.hpp) the deviation splits into the
+// orthonormal eigenvectors of K, each a damped oscillator solved in closed form
+// (damped_mode.hpp). K depends only on (n, left held, right held), so the eigendecomposition is
+// made once per shape and shared by every run of that shape (RunBases): the quiet phase's groove
+// segments and the active set's modal runs are both built on it.
+#include <array>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "springblock/integrate/linear/damped_mode.hpp"
+#include "springblock/model.hpp"
+
+namespace sb::event_detail {
+
+struct RunBasis {
+  Eigen::MatrixXd Q;              // columns: orthonormal modes of K
+  Eigen::VectorXd lambda;         // eigenvalues of K (stiffnesses of the modes)
+  std::vector<DampedMode> modes;  // alpha = gamma / 2, omega^2 = lambda / m
+  // Q's first and last rows, contiguous: a contact block's force reads only the row of the
+  // groove block beside it, and Q is stored by column (a row is strided by n).
+  std::vector<double> first_row, last_row;
+  // Per mode: the exact transition over the sample spacing (RunBases::set_sample_dt), so
+  // consecutive samples advance the modes without transcendental calls.
+  std::vector<Transition> sample;
+  int n() const { return static_cast<int>(modes.size()); }
+};
+
+class RunBases {
+ public:
+  explicit RunBases(const Chain& c) : K_s_(c.K_s), K_int_(c.K_int), m_(c.m), gamma_(c.gamma) {}
+  // The basis of a run of n blocks, held at its left / right end by a stuck block or not (a
+  // free chain end). References stay valid for the life of this object.
+  const RunBasis& get(int n, bool left, bool right);
+  // Sample transitions of every basis, present and future.
+  void set_sample_dt(double dt);
+  int size() const { return static_cast<int>(bases_.size()); }
+
+ private:
+  double K_s_, K_int_, m_, gamma_, sample_dt_ = 0;
+  std::map<std::tuple<int, bool, bool>, RunBasis> bases_;
+};
+
+}  // namespace sb::event_detail
