@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "springblock/chain_force.hpp"
 #include "springblock/parameters.hpp"
 
 namespace sb {
@@ -33,11 +34,9 @@ struct Chain {
   // Net non-friction force on block i (slider spring + internal springs + damping) at time t.
   // Free chain ends: the end blocks have one neighbour.
   double driving_force(int i, const double* u, const double* v, double t) const {
-    double f = K_s * (v_slider * t - u[i]) - m * gamma * v[i];
-    if (i > 0) f += K_int * (u[i - 1] - u[i]);
-    if (i + 1 < N) f += K_int * (u[i + 1] - u[i]);
-    return f;
+    return force_checked<true, true>(force_coefficients(), i, v_slider * t, u, v, 0.0);
   }
+  ForceCoefficients force_coefficients() const { return {N, K_s, K_int, m * gamma}; }
 };
 
 }  // namespace sb

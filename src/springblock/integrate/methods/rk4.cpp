@@ -6,7 +6,8 @@
 #include <cstdint>
 #include <limits>
 
-#include "springblock/integrate/step/kernel_clones.hpp"
+#include "springblock/integrate/step/chain_accel.hpp"
+#include "springblock/kernel_clones.hpp"
 
 // The step and the switch screen have AVX2 clones (kernel_clones.hpp). With the screen they made
 // accuracy_cost's RK4 settings x1.4-2.2 faster (paper tier, before and after), bit-identical.
@@ -26,32 +27,12 @@ struct Workspace {
       : a(N), us(N), vs(N), su(N), sv(N), mobile(N), f_kin(N), slide_dir(N), f_screen(N), stop_bias(N) {}
 };
 
-// Acceleration of every block, specialised at compile time on the smooth effects present so a
-// scene without internal springs or damping does not pay for them in the inner loop.
+// Acceleration of every block: the steppers' one right-hand side (step/chain_accel.hpp) over the
+// whole chain, specialised at compile time on the smooth effects present.
 template <bool Coupled, bool Damped>
 SB_INLINE void acceleration(const Chain& c, const double* __restrict u, const double* __restrict v, double t,
-                  const double* __restrict mobile, const double* __restrict f_kin, double* __restrict a) {
-  const int N = c.N;
-  const double Ks = c.K_s, Ki = c.K_int, mg = c.m * c.gamma, inv_m = 1.0 / c.m;
-  const double x_slider = c.v_slider * t;
-  auto base = [&](int i) {
-    double f = Ks * (x_slider - u[i]) - f_kin[i];
-    if constexpr (Damped) f -= mg * v[i];
-    return f;
-  };
-  if (N == 1) {
-    a[0] = mobile[0] * inv_m * base(0);
-    return;
-  }
-  // Free chain ends have a single internal spring.
-  a[0] = mobile[0] * inv_m * (base(0) + (Coupled ? Ki * (u[1] - u[0]) : 0.0));
-  for (int i = 1; i < N - 1; ++i) {
-    double f = Ks * (x_slider - u[i]) - f_kin[i];
-    if constexpr (Damped) f -= mg * v[i];
-    if constexpr (Coupled) f += Ki * (u[i - 1] - 2.0 * u[i] + u[i + 1]);
-    a[i] = mobile[i] * inv_m * f;
-  }
-  a[N - 1] = mobile[N - 1] * inv_m * (base(N - 1) + (Coupled ? Ki * (u[N - 2] - u[N - 1]) : 0.0));
+                            const double* __restrict mobile, const double* __restrict f_kin, double* __restrict a) {
+  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, u, v, t, mobile, f_kin, a);
 }
 
 // One intermediate RK4 stage: accumulate the stage slopes (weight 2) and form the next stage
@@ -103,20 +84,21 @@ SB_KERNEL_CLONES void rk4_step(const Chain& c, State& s, Workspace& w, double t,
 // reaches its threshold lowered by a relative 1e-9 (far above the rounding of either sum). Only
 // then do the exact rules run, so every decision is theirs; the screen skips only steps on
 // which they would change nothing.
-SB_KERNEL_CLONES bool switch_screen(int N, double Ks, double Ki, double slider, const double* __restrict u,
+SB_KERNEL_CLONES bool switch_screen(const ForceCoefficients& k, double slider, const double* __restrict u,
                    const double* __restrict v, const double* __restrict slide_dir,
                    const double* __restrict f_screen, const double* __restrict stop_bias) {
+  const int N = k.N;
   auto score = [&](int i, double F) {
     return std::max(std::fabs(F) - f_screen[i], stop_bias[i] - slide_dir[i] * v[i]);
   };
-  if (N == 1) return score(0, Ks * (slider - u[0])) >= 0.0;
-  double worst = std::max(score(0, Ks * (slider - u[0]) + Ki * (u[1] - u[0])),
-                          score(N - 1, Ks * (slider - u[N - 1]) + Ki * (u[N - 2] - u[N - 1])));
+  auto spring = [&](int i) { return force_checked<true, false>(k, i, slider, u, v, 0.0); };
+  if (N == 1) return score(0, spring(0)) >= 0.0;
+  double worst = std::max(score(0, spring(0)), score(N - 1, spring(N - 1)));
   // GCC keeps a floating-point max reduction scalar (NaN and signed-zero rules) unless told
   // that its order does not matter: a max is exact, so it does not.
 #pragma omp simd reduction(max : worst)
   for (int i = 1; i < N - 1; ++i) {
-    const double F = Ks * (slider - u[i]) + Ki * (u[i - 1] - 2.0 * u[i] + u[i + 1]);
+    const double F = force_interior<true, false>(k, i, slider, u, v, 0.0);
     const double slip = std::fabs(F) - f_screen[i];
     const double stop = stop_bias[i] - slide_dir[i] * v[i];
     const double x = slip > stop ? slip : stop;
@@ -165,7 +147,7 @@ int apply_switches(const Chain& c, State& s, Workspace& w) {
 // apply_switches behind the screen (unless `screen` is off, the tests' reference); `n_sliding`
 // is the count after the previous call.
 int apply_switches_screened(const Chain& c, State& s, Workspace& w, int n_sliding, bool screen) {
-  const bool maybe = !screen || switch_screen(c.N, c.K_s, c.K_int, c.v_slider * s.t, s.u.data(), s.v.data(),
+  const bool maybe = !screen || switch_screen(c.force_coefficients(), c.v_slider * s.t, s.u.data(), s.v.data(),
                                               w.slide_dir.data(), w.f_screen.data(), w.stop_bias.data());
   return maybe ? apply_switches(c, s, w) : n_sliding;
 }

@@ -5,7 +5,8 @@
 // scene without internal springs or damping does not pay for them. The neighbours lo-1 and hi
 // are read from u (they are stuck blocks while the span is stepped). The chain's free ends are
 // peeled off so the interior loop has no branch and vectorises.
-#include "springblock/integrate/step/kernel_clones.hpp"
+#include "springblock/chain_force.hpp"
+#include "springblock/kernel_clones.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
@@ -15,26 +16,15 @@ SB_INLINE void chain_accel(const Chain& c, int lo, int hi, const double* __restr
                         double t, const double* __restrict mobile, const double* __restrict f_kin,
                         double* __restrict a) {
   const int N = c.N;
-  const double Ks = c.K_s, Ki = c.K_int, mg = c.m * c.gamma, inv_m = 1.0 / c.m;
-  const double slider = c.v_slider * t;
+  const ForceCoefficients k = c.force_coefficients();
+  const double inv_m = 1.0 / c.m, slider = c.v_slider * t;
   auto one = [&](int i) {  // with the end checks
-    double f = Ks * (slider - u[i]) - f_kin[i];
-    if constexpr (Damped) f -= mg * v[i];
-    if constexpr (Coupled) {
-      if (i > 0) f += Ki * (u[i - 1] - u[i]);
-      if (i + 1 < N) f += Ki * (u[i + 1] - u[i]);
-    }
-    a[i] = mobile[i] * inv_m * f;
+    a[i] = mobile[i] * inv_m * force_checked<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
   };
   int first = lo, last = hi;
   if (first == 0 && first < last) one(first++);
   if (last == N && first < last) one(--last);
-  for (int i = first; i < last; ++i) {
-    double f = Ks * (slider - u[i]) - f_kin[i];
-    if constexpr (Damped) f -= mg * v[i];
-    if constexpr (Coupled) f += Ki * (u[i - 1] - 2.0 * u[i] + u[i + 1]);
-    a[i] = mobile[i] * inv_m * f;
-  }
+  for (int i = first; i < last; ++i) a[i] = mobile[i] * inv_m * force_interior<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
 }
 
 }  // namespace sb::event_detail

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "springblock/integrate/step/kernel_clones.hpp"
+#include "springblock/kernel_clones.hpp"
 
 namespace sb::event_detail {
 

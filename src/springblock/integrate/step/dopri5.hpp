@@ -12,7 +12,7 @@
 
 #include "springblock/integrate/block_range.hpp"
 #include "springblock/integrate/step/chain_accel.hpp"
-#include "springblock/integrate/step/kernel_clones.hpp"
+#include "springblock/kernel_clones.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
