@@ -2,64 +2,34 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "shell/command_line.hpp"
+#include "shell/exit_codes.hpp"
+#include "shell/field_options.hpp"
+#include "shell/interrupt.hpp"
+#include "shell/output.hpp"
+#include "shell/progress.hpp"
 #include "springblock/ensemble.hpp"
-#include "springblock/integrate/integrator.hpp"
 #include "springblock/io.hpp"
 #include "springblock/scene_fields.hpp"
 #include "springblock/surface.hpp"
 #include "springblock/errors.hpp"
 
 namespace repro {
+namespace shell = sb::shell;
 namespace {
-
-std::atomic<bool> g_interrupt{false};
-extern "C" void on_signal(int) { g_interrupt.store(true); }
 
 // Figure scripts need the stick-slip shape, not 10^5 points per trace.
 constexpr std::size_t kMaxSeriesPoints = 40000;
-
-std::string join_args(int argc, char** argv) {
-  std::string s;
-  for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
-  return s;
-}
-
-// The event integrator is being written alongside this code; until the factory knows it we
-// fall back to the paper's RK4 rather than refuse to run, and say so where it will be seen.
-sb::Method resolve_method(const std::string& requested, const std::string& target) {
-  sb::Method m = sb::parse_method(requested);
-  if (m != sb::Method::Event) return m;
-  sb::RunControl probe;
-  probe.method = sb::Method::Event;
-  try {
-    (void)sb::make_integrator(probe);
-    return m;
-  } catch (const sb::InputError& e) {
-    std::fprintf(stderr, "%s: warning: method 'event' is not available (%s); using rk4\n", target.c_str(),
-                 e.what());
-    return sb::Method::RK4;
-  }
-}
-
-std::string format_seconds(double s) {
-  char buf[32];
-  if (s < 120) std::snprintf(buf, sizeof buf, "%.0fs", s);
-  else if (s < 7200) std::snprintf(buf, sizeof buf, "%.1fmin", s / 60);
-  else std::snprintf(buf, sizeof buf, "%.1fh", s / 3600);
-  return buf;
-}
 
 // Repetitions of every tier, so a reader of one tier's results can say what another would resolve.
 nlohmann::json tier_reps_json() {
@@ -285,148 +255,195 @@ std::vector<TableRow> read_table(const std::string& path) {
   return rows;
 }
 
-int run_target(int argc, char** argv, const std::string& target, const std::string& summary, const PlanFn& plan,
-               const FinishFn& finish) {
+namespace {
+
+// The command line of a target. --method, --threads and --seed are scene fields: the library
+// parses and checks them as for `springblock run`, with the same messages.
+struct TargetCommandLine {
+  CLI::App app;
+  shell::FieldOptions fields;
   Options opt;
-  opt.target = target;
-  opt.command_line = join_args(argc, argv);
-  CLI::App app{target + ": " + summary};
+};
+
+void add_target_options(TargetCommandLine& cl) {
+  auto& app = cl.app;
+  Options& opt = cl.opt;
   app.add_option("--tier", opt.tier, "paper (20 repetitions, the default), quick (6) or smoke (2, short; pipeline test only)")
       ->check(CLI::IsMember({"paper", "quick", "smoke"}));
-  app.add_option("--out", opt.out, "directory for " + target + ".json");
-  app.add_option("--method", opt.method, "integrator: event (default; falls back to rk4 if absent) or rk4")
-      ->check(CLI::IsMember({"event", "rk4"}));
-  app.add_option("--threads", opt.threads, "OpenMP threads over repetitions (0 = all cores)")
-      ->check(CLI::Range(0, 1024));
-  app.add_option("--seed", opt.seed, "seed of every scene's repetition streams");
+  app.add_option("--out", opt.out, "directory for " + opt.target + ".json");
+  cl.fields.add(&app, "method", "integrator: event (default; exact switching, adaptive) or rk4 (the paper's fixed step)")
+      ->type_name("TEXT");
+  cl.fields.add(&app, "threads", "OpenMP threads over repetitions, 0 to 1024 (0 = all cores, the default)")->type_name("INT");
+  cl.fields.add(&app, "seed", "seed of every scene's repetition streams, >= 0 (default 1)")->type_name("UINT");
   app.add_option("--table", opt.table, "published table TSV this target reproduces");
   app.add_option("--input", opt.inputs, "JSON of another target this one reads")->check(CLI::ExistingFile);
   app.add_option("--only", opt.only, "comma-separated scene ids to run (a subset, for debugging)");
   app.add_option("--layout", opt.layout,
                  "pattern layout of every scene (pawl_first, symmetric, groove_first, one_based; per level, comma "
                  "separated; default: the library's, see paper/choices.md)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "%s: %s\nRun '%s --help' for the options.\n", target.c_str(), e.what(), argv[0]);
-    return 2;
-  }
+}
 
-  const auto wall0 = std::chrono::steady_clock::now();
-  std::vector<LabelledScene> scenes;
-  Tier tier;
-  sb::Method method;
-  try {
-    tier = tier_named(opt.tier);
-    method = resolve_method(opt.method, target);
-    Context ctx(opt, tier, method);
-    scenes = plan(ctx);
-    if (!opt.only.empty()) {
-      auto keep = split(opt.only, ',');
-      std::set<std::string> wanted(keep.begin(), keep.end());
-      std::erase_if(scenes, [&](const LabelledScene& s) { return !wanted.count(s.id); });
-      if (scenes.empty()) throw sb::InputError("only", "no scene of " + target + " has id in '" + opt.only + "'");
-    }
-    for (auto& s : scenes) {
-      if (!s.shared_seed) s.scene.seed = scene_seed(opt.seed, s.id);
-      sb::validate(s.scene);
-    }
-  } catch (const sb::InputError& e) {
-    std::fprintf(stderr, "%s: invalid %s: %s\n", target.c_str(), e.field.c_str(), e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s: cannot set up: %s\n", target.c_str(), e.what());
-    return 2;
-  }
+// The run's context: the scene fields of the command line read back from a scene that starts
+// from the Options' defaults. Throws sb::InputError.
+Context make_context(const TargetCommandLine& cl) {
+  Options opt = cl.opt;
+  sb::Scene fields;
+  fields.run.method = sb::parse_method(opt.method);
+  fields.threads = opt.threads;
+  fields.seed = opt.seed;
+  cl.fields.apply(fields);
+  opt.method = sb::method_name(fields.run.method);
+  opt.threads = fields.threads;
+  opt.seed = fields.seed;
+  return Context(opt, tier_named(opt.tier), fields.run.method);
+}
 
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+// The driver's scenes, cut to --only, each with its seed, checked.
+std::vector<LabelledScene> planned_scenes(const Context& ctx, const PlanFn& plan) {
+  const Options& opt = ctx.opt;
+  std::vector<LabelledScene> scenes = plan(ctx);
+  if (!opt.only.empty()) {
+    auto keep = split(opt.only, ',');
+    std::set<std::string> wanted(keep.begin(), keep.end());
+    std::erase_if(scenes, [&](const LabelledScene& s) { return !wanted.count(s.id); });
+    if (scenes.empty()) throw sb::InputError("only", "no scene of " + opt.target + " has id in '" + opt.only + "'");
+  }
+  for (auto& s : scenes) {
+    if (!s.shared_seed) s.scene.seed = scene_seed(opt.seed, s.id);
+    sb::validate(s.scene);
+  }
+  return scenes;
+}
+
+// All scenes' repetitions in one pool (sb::run_ensembles): the threads never wait at the end of
+// a scene. Borrowed scenes enter the pool only as their one-repetition trace, if they keep one.
+struct Pool {
+  std::vector<sb::Scene> scenes;
+  std::vector<double> weights;   // progress and ETA are over the whole target, scenes weighted by cost()
+  std::vector<int> entry;        // scene -> its pool entry, or -1
+  std::vector<std::size_t> owner;  // pool entry -> scene
+};
+
+Pool make_pool(const Context& ctx, const std::vector<LabelledScene>& scenes) {
+  Pool pool;
+  pool.entry.assign(scenes.size(), -1);
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    const auto& ls = scenes[k];
+    sb::Scene sim = ls.scene;
+    if (!ls.borrow.target.empty()) {
+      if (!ls.borrow.trace) continue;
+      sim.seed = source_record(ctx, ls.borrow).at("result").at("seed").get<std::uint64_t>();
+      sim.reps = 1;
+      sim.observe.series = true;
+    }
+    pool.entry[k] = static_cast<int>(pool.scenes.size());
+    pool.owner.push_back(k);
+    pool.scenes.push_back(sim), pool.weights.push_back(cost(sim));
+  }
+  return pool;
+}
+
+// The pool's results as the document's scene records, one stderr line per scene.
+nlohmann::json scene_records(const Context& ctx, const std::vector<LabelledScene>& scenes, const Pool& pool,
+                             const std::vector<sb::EnsembleResult>& results) {
+  const char* target = ctx.opt.target.c_str();
   nlohmann::json records = nlohmann::json::array();
-  try {
-    // All scenes' repetitions in one pool (sb::run_ensembles): the threads never wait at the
-    // end of a scene. Progress and ETA are over the whole target, scenes weighted by cost().
-    // Borrowed scenes enter the pool only as their one-repetition trace, if they keep one.
-    std::vector<sb::Scene> pool;
-    std::vector<double> weights;
-    std::vector<int> pooled(scenes.size(), -1);  // scene -> its pool entry
-    std::vector<std::size_t> owner;              // pool entry -> scene
-    const Context ctx(opt, tier, method);
-    for (std::size_t k = 0; k < scenes.size(); ++k) {
-      const auto& ls = scenes[k];
-      sb::Scene sim = ls.scene;
-      if (!ls.borrow.target.empty()) {
-        if (!ls.borrow.trace) continue;
-        sim.seed = source_record(ctx, ls.borrow).at("result").at("seed").get<std::uint64_t>();
-        sim.reps = 1;
-        sim.observe.series = true;
-      }
-      pooled[k] = static_cast<int>(pool.size());
-      owner.push_back(k);
-      pool.push_back(sim), weights.push_back(cost(sim));
+  // A statistic no repetition contributed to (mu_d of a scene stopped at its first slip) is
+  // "not measured", never a printed nan.
+  auto stat = [](const sb::Statistic& x) {
+    return x.n > 0 ? fmt::format("{:.4f} +- {:.4f}", x.mean, x.sem) : std::string("not measured");
+  };
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    const auto& ls = scenes[k];
+    if (!ls.borrow.target.empty()) {
+      records.push_back(borrowed_record(ctx, ls, pool.entry[k] >= 0 ? &results[pool.entry[k]] : nullptr));
+      std::fprintf(stderr, "[%s]   %s: %s/%s%s\n", target, ls.id.c_str(), ls.borrow.target.c_str(),
+                   ls.borrow.id.c_str(), ls.borrow.trace ? " (+ trace of repetition 0)" : "");
+      continue;
     }
-    auto progress = [&](double f, double elapsed) {
-      const std::string eta = f > 0.01 ? format_seconds(elapsed * (1 - f) / f) : "?";
-      std::fprintf(stderr, "\r[%s] %zu scenes, %5.1f%% elapsed %s ETA %s   ", target.c_str(), pool.size(),
-                   100 * f, format_seconds(elapsed).c_str(), eta.c_str());
-      std::fflush(stderr);
-    };
-    progress(0, 0);
-    auto results = sb::run_ensembles(pool, &g_interrupt, progress, weights);
-    for (const auto& r : results)
-      if (r.interrupted) {
-        std::fprintf(stderr, "\n%s: interrupted; nothing written, existing output untouched\n", target.c_str());
-        return 130;
-      }
-    std::fprintf(stderr, "\n");
-    for (std::size_t k = 0; k < scenes.size(); ++k) {
-      const auto& ls = scenes[k];
-      if (!ls.borrow.target.empty()) {
-        records.push_back(borrowed_record(ctx, ls, pooled[k] >= 0 ? &results[pooled[k]] : nullptr));
-        std::fprintf(stderr, "[%s]   %s: %s/%s%s\n", target.c_str(), ls.id.c_str(), ls.borrow.target.c_str(),
-                     ls.borrow.id.c_str(), ls.borrow.trace ? " (+ trace of repetition 0)" : "");
-        continue;
-      }
-      const auto& result = results[pooled[k]];
-      // A statistic no repetition contributed to (mu_d of a scene stopped at its first slip) is
-      // "not measured", never a printed nan.
-      auto stat = [](const sb::Statistic& x) {
-        return x.n > 0 ? fmt::format("{:.4f} +- {:.4f}", x.mean, x.sem) : std::string("not measured");
-      };
-      std::fprintf(stderr, "[%s]   %s: mu_s = %s, mu_d = %s (%.1fs of the pool)\n", target.c_str(), ls.id.c_str(),
-                   stat(result.mu_s).c_str(), stat(result.mu_d).c_str(), result.wall_s);
-      records.push_back(scene_record(ls, result, opt.command_line));
-      // Observed on another scene's simulation (same trajectory, other rules or run length).
-      if (result.trajectory_from >= 0) records.back()["trajectory_from"] = scenes[owner[result.trajectory_from]].id;
-    }
-    const Tier& t = tier;
-    nlohmann::json doc = {{"target", target},
-                          {"tier", t.name},
-                          {"method", sb::method_name(method)},
-                          {"method_requested", opt.method},
-                          {"reps", t.reps},
-                          {"tier_reps", tier_reps_json()},
-                          {"duration_t0", t.duration_t0},
-                          {"seed", opt.seed},
-                          {"layout", ctx.base_scene().pattern.layout_text()},
-                          {"provenance", sb::provenance(opt.command_line)},
-                          {"scenes", records}};
-    if (finish) finish(Context(opt, tier, method), doc);
-    doc["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    std::filesystem::create_directories(opt.out);
-    const std::string path = opt.out + "/" + target + ".json";
-    sb::write_file_atomic(path, doc.dump(1) + "\n");
-    std::fprintf(stderr, "[%s] wrote %s in %s\n", target.c_str(), path.c_str(),
-                 format_seconds(doc["wall_seconds"].get<double>()).c_str());
-  } catch (const sb::InputError& e) {
-    std::fprintf(stderr, "\n%s: invalid %s: %s\n", target.c_str(), e.field.c_str(), e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "\n%s: error: %s\n", target.c_str(), e.what());
-    return 1;
+    const auto& result = results[pool.entry[k]];
+    std::fprintf(stderr, "[%s]   %s: mu_s = %s, mu_d = %s (%.1fs of the pool)\n", target, ls.id.c_str(),
+                 stat(result.mu_s).c_str(), stat(result.mu_d).c_str(), result.wall_s);
+    records.push_back(scene_record(ls, result, ctx.opt.command_line));
+    // Observed on another scene's simulation (same trajectory, other rules or run length).
+    if (result.trajectory_from >= 0) records.back()["trajectory_from"] = scenes[pool.owner[result.trajectory_from]].id;
   }
-  return 0;
+  return records;
+}
+
+nlohmann::json target_document(const Context& ctx, nlohmann::json records) {
+  const Options& opt = ctx.opt;
+  return {{"target", opt.target},
+          {"tier", ctx.tier.name},
+          {"method", sb::method_name(ctx.method)},
+          {"method_requested", opt.method},
+          {"reps", ctx.tier.reps},
+          {"tier_reps", tier_reps_json()},
+          {"duration_t0", ctx.tier.duration_t0},
+          {"seed", opt.seed},
+          {"layout", ctx.base_scene().pattern.layout_text()},
+          {"provenance", sb::provenance(opt.command_line)},
+          {"scenes", std::move(records)}};
+}
+
+std::string output_path(const Options& opt) { return opt.out + "/" + opt.target + ".json"; }
+
+using Clock = std::chrono::steady_clock;
+
+// Runs the pool with progress and ETA, then writes the document; nothing when interrupted.
+int simulate_and_write(const Context& ctx, const std::vector<LabelledScene>& scenes, const FinishFn& finish,
+                       Clock::time_point wall0) {
+  const std::string& target = ctx.opt.target;
+  const auto* interrupt = shell::catch_interrupts();
+  const Pool pool = make_pool(ctx, scenes);
+  auto progress = [&](double f, double elapsed) {
+    const std::string eta = f > 0.01 ? shell::format_seconds(shell::eta_seconds(f, elapsed)) : "?";
+    shell::show_progress(fmt::format("[{}] {} scenes, {:5.1f}% elapsed {} ETA {}", target, pool.scenes.size(), 100 * f,
+                                     shell::format_seconds(elapsed), eta));
+  };
+  progress(0, 0);
+  const auto results = sb::run_ensembles(pool.scenes, interrupt, progress, pool.weights);
+  shell::end_progress_line();
+  for (const auto& r : results)
+    if (r.interrupted) {
+      std::fprintf(stderr, "%s: interrupted; nothing written, existing output untouched\n", target.c_str());
+      return shell::kInterrupted;
+    }
+  nlohmann::json doc = target_document(ctx, scene_records(ctx, scenes, pool, results));
+  if (finish) finish(ctx, doc);
+  doc["wall_seconds"] = std::chrono::duration<double>(Clock::now() - wall0).count();
+  const std::string path = output_path(ctx.opt);
+  shell::write_output(path, doc.dump(1) + "\n");
+  std::fprintf(stderr, "[%s] wrote %s in %s\n", target.c_str(), path.c_str(),
+               shell::format_seconds(doc["wall_seconds"].get<double>()).c_str());
+  return shell::kOk;
+}
+
+}  // namespace
+
+int run_target(int argc, char** argv, const std::string& target, const std::string& summary, const PlanFn& plan,
+               const FinishFn& finish) {
+  TargetCommandLine cl{CLI::App{target + ": " + summary}, {}, {}};
+  cl.opt.target = target;
+  cl.opt.command_line = shell::command_line(argc, argv);
+  add_target_options(cl);
+  if (auto done = shell::parse(cl.app, argc, argv, target, "Run '" + std::string(argv[0]) + " --help' for the options."))
+    return *done;
+
+  const auto wall0 = Clock::now();
+  std::optional<Context> ctx;
+  std::vector<LabelledScene> scenes;
+  // Setup reads tables and other targets' documents: any failure there is the input's (exit 2).
+  const int setup = shell::guarded(target, [&] {
+    ctx.emplace(make_context(cl));
+    scenes = planned_scenes(*ctx, plan);
+    // The output is claimed now, not after the run: a bad --out fails before any simulation.
+    shell::make_output_directory(ctx->opt.out, "out");
+    shell::claim_output(output_path(ctx->opt), "out");
+    return int{shell::kOk};
+  }, {"cannot set up", shell::kBadInput});
+  if (setup != shell::kOk) return setup;
+  return shell::guarded(target, [&] { return simulate_and_write(*ctx, scenes, finish, wall0); });
 }
 
 }  // namespace repro

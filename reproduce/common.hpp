@@ -37,7 +37,7 @@ struct Options {
   std::string target;
   std::string tier = "paper";
   std::string out = ".";
-  std::string method = "event";
+  std::string method = "event";  // as given; the document keeps it as method_requested
   int threads = 0;
   std::uint64_t seed = 1;
   std::string table;                // published_tab_pat*.tsv (table drivers)
@@ -79,7 +79,7 @@ class Context {
   sb::Scene chain(int N, const std::string& length, const std::string& pattern = "smooth") const;
   const Options opt;
   const Tier tier;
-  const sb::Method method;  // after the event -> rk4 fallback
+  const sb::Method method;  // --method
 };
 
 // The seed a scene with this id gets from --seed (a driver that pairs its scenes with another
