@@ -42,7 +42,7 @@ ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double 
       paths_(c),
       events_(c.N),
       fresh_(c.N, 0) {
-  modal_.set_quiet_scales(eps_u_, eps_v_);
+  modal_.set_settle_scales(eps_u_, eps_v_);
   runs_.reserve(c.N);
   stepped_.reserve(c.N);
   watched_.reserve(c.N);
@@ -121,7 +121,7 @@ void ActiveSet::classify_runs(const Chain& c, const State& s, const std::uint8_t
       // to s.t (materialise_near): whether its transient is gone comes from its modes' envelope.
       // Its A, B still hold: its stuck ends have not moved since they were computed.
       if (was == kModal && untouched(s, touched, r.span) && modal_.same_run(r.span.lo, r.span.hi)) {
-        r.kind = s.t >= modal_.quiet_after(r.span.lo) ? kSettled : kModal;
+        r.kind = s.t >= modal_.settled_after(r.span.lo) ? kSettled : kModal;
         continue;
       }
       // Was stepped, or modal and touched (ringing, or part of an active run), or never

@@ -63,7 +63,7 @@ void Switching::update(const Chain& c, const State& s, int i) {
   f_kin_[i] = s.dir[i] * c.f_kinetic[i];
 }
 
-int Switching::settle(const Chain& c, State& s, bool full) {
+int Switching::apply(const Chain& c, State& s, bool full) {
   if (s.t != instant_) {
     instant_ = s.t;
     at_instant_ = 0;

@@ -11,7 +11,7 @@
 // the order they were flagged, and repeated until none of them changes, so the outcome is
 // deterministic. Nothing else can switch at the instant: a switch moves no block, so it changes
 // no other block's force (only the switched block's own velocity), and every other block's
-// event is located by the integrator at its own time. The first settle of a run (full = true)
+// event is located by the integrator at its own time. The first apply of a run (full = true)
 // visits every contact block in index order. Each switch is counted; more than 100 N at one instant is a cascade that
 // would never end, reported as std::runtime_error.
 #include <cstdint>
@@ -32,14 +32,14 @@ class Switching {
  public:
   explicit Switching(int N) : flagged_(N, 0), touched_(N, 0), dir_seen_(N, 0), mobile_(N), f_kin_(N) {}
 
-  // Mark a block whose event was located at the current instant (cleared by settle()).
+  // Mark a block whose event was located at the current instant (cleared by apply()).
   void flag(int i) {
     if (!flagged_[i]) flagged_[i] = 1, flag_list_.push_back(i);
   }
-  // The blocks flagged since the last settle(), in flagging order.
+  // The blocks flagged since the last apply(), in flagging order.
   const std::vector<int>& flagged() const { return flag_list_; }
   // Apply the rules at s.t; returns the number of switches made. Throws on a cascade.
-  int settle(const Chain& c, State& s, bool full = false);
+  int apply(const Chain& c, State& s, bool full = false);
   // Rebuild mobile / f_kin from s.dir (at the start of a run).
   void sync(const Chain& c, const State& s);
 
@@ -63,7 +63,7 @@ class Switching {
   std::vector<std::int8_t> dir_seen_;  // s.dir as mobile_ / f_kin_ last saw it
   std::vector<double> mobile_, f_kin_;
   int n_sliding_ = 0;
-  double instant_ = -1;            // time of the last settle, to count switches per instant
+  double instant_ = -1;            // time of the last apply, to count switches per instant
   std::int64_t at_instant_ = 0;    // switches made at that time so far
 };
 

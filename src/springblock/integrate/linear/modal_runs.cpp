@@ -116,7 +116,7 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     acc0_[lo + k] = -c.gamma * pk - b.run->modes[k].omega2 * qk;
   }
   Run run{lo, hi, &b, s.t, s.t, 0, false, true, grooves};
-  if (grooves) run.quiet_after = s.t + envelope_time(run);
+  if (grooves) run.settled_after = s.t + envelope_time(run);
   if (old >= 0 && runs_[old].lo == lo && !runs_[old].live) {
     // Reuse the slot of the old run that started here; its blocks are re-marked by end().
     for (int i = runs_[old].lo; i < runs_[old].hi; ++i) run_of_[i] = -1;
@@ -132,7 +132,7 @@ double ModalRuns::envelope_time(const Run& r) const {
   // |q| <= e^{-alpha tau} Cq with Cq = hypot(q0, P / w), and q' = -alpha q + e^{-alpha tau}
   // (P cos - (w^2 q0 / w) sin) gives |q'| <= e^{-alpha tau} (alpha Cq + hypot(P, w q0)). Rows mix
   // modes with |Q| <= 1, so the sums over modes bound every row. All modes share alpha.
-  if (!(eps_u_ > 0) || !(eps_vq_ > 0)) return std::numeric_limits<double>::infinity();
+  if (!(eps_u_ > 0) || !(eps_v_settle_ > 0)) return std::numeric_limits<double>::infinity();
   double su = 0, sv = 0, alpha = 0;
   for (int k = 0; k < r.hi - r.lo; ++k) {
     const DampedMode& m = r.basis->run->modes[k];
@@ -145,7 +145,7 @@ double ModalRuns::envelope_time(const Run& r) const {
     sv += m.alpha * Cq + std::hypot(P, w * q0);
     alpha = m.alpha;
   }
-  return std::max({0.0, std::log(su / eps_u_) / alpha, std::log(sv / eps_vq_) / alpha});
+  return std::max({0.0, std::log(su / eps_u_) / alpha, std::log(sv / eps_v_settle_) / alpha});
 }
 
 void ModalRuns::end() {

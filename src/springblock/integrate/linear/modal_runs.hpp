@@ -49,13 +49,13 @@ class ModalRuns {
   bool add(const Chain& c, const State& s, int lo, int hi, bool keep, bool grooves);
   // Drop the runs not registered since begin().
   void end();
-  // Transients below these (in u and v, every row) count as gone: see quiet_after().
-  void set_quiet_scales(double eps_u, double eps_v) { eps_u_ = eps_u, eps_vq_ = eps_v; }
+  // Transients below these (in u and v, every row) count as gone: see settled_after().
+  void set_settle_scales(double eps_u, double eps_v) { eps_u_ = eps_u, eps_v_settle_ = eps_v; }
   // For the run holding block i: a time after which its deviation from the affine path is
-  // below the quiet scales in every row (from each mode's exponential envelope at projection;
+  // below the settle scales in every row (from each mode's exponential envelope at projection;
   // +inf without damping or with a mode not clearly underdamped, where no bound is taken).
   // Lets the active set settle a kept groove run without evaluating it.
-  double quiet_after(int i) const { return runs_[run_of_[i]].quiet_after; }
+  double settled_after(int i) const { return runs_[run_of_[i]].settled_after; }
   // True if a modal run spans exactly [lo, hi).
   bool same_run(int lo, int hi) const {
     return run_of_[lo] >= 0 && runs_[run_of_[lo]].lo == lo && runs_[run_of_[lo]].hi == hi;
@@ -107,7 +107,7 @@ class ModalRuns {
     bool cursor = false;
     bool live = true;  // registered in the current classification
     bool grooves = false;  // no contact block in it
-    double quiet_after = std::numeric_limits<double>::infinity();
+    double settled_after = std::numeric_limits<double>::infinity();
   };
   // Rows of run r from modal coordinates q, qd at time t into u, v (rows [r0, r1) stepping by dr).
   void rows(const Run& r, double t, const double* q, const double* qd, int r0, int r1, int dr, double* u,
@@ -119,7 +119,7 @@ class ModalRuns {
 
   int N_;
   double K_int_, eps_v_, H_, sample_dt_ = 0;
-  double eps_u_ = 0, eps_vq_ = 0;  // quiet scales (set_quiet_scales)
+  double eps_u_ = 0, eps_v_settle_ = 0;  // settle scales (set_settle_scales)
   RunBases modes_;
   std::map<std::tuple<int, bool, bool>, Basis> bases_;
   std::vector<Run> runs_;

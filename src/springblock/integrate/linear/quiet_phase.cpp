@@ -30,7 +30,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
     while (j + 1 < N && !c.contact[j + 1]) ++j;
     const int n = j - i + 1;
     const bool left = i > 0, right = j + 1 < N;
-    segs_.push_back(Segment{i, n, &bases_.get(n, left, right), offset, left, right});
+    segs_.push_back(GrooveRun{i, n, &bases_.get(n, left, right), offset, left, right});
     offset += n;
     i = j + 1;
   }
@@ -61,7 +61,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
     }
     if (e.nseg) {
       for (int n = 0; n < e.nseg; ++n) {
-        const Segment& s = segs_[e.seg[n]];
+        const GrooveRun& s = segs_[e.seg[n]];
         const RunBasis& d = *s.basis;
         for (int k = 0; k < s.n; ++k) e.march.add_mode(K_int_ * d.Q(e.row[n], k), d.modes[k], s.offset + k);
       }
@@ -79,7 +79,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
 
 // A, B of segment s from the stuck neighbours' positions in u, and the modal coordinates of the
 // deviation from them at t0.
-void QuietPhase::project(const Chain& c, const Segment& s, const double* u, const double* v) {
+void QuietPhase::project(const Chain& c, const GrooveRun& s, const double* u, const double* v) {
   const double t0 = t0_, mg = c.m * c.gamma;
   const RunBasis& d = *s.basis;
   double* A = A_.data() + s.offset;
@@ -123,7 +123,7 @@ void QuietPhase::project(const Chain& c, const Segment& s, const double* u, cons
 // Underdamped modes shrink at least like e^{-alpha tau} (amplitude and velocity amplitude); once
 // below 1e-17 of the segment's u and v scales they no longer change a double (dead_tau), and
 // below the sample scales they are dropped from samples (sample_dead_tau).
-void QuietPhase::set_dead_times(const Chain& c, Segment& s) const {
+void QuietPhase::set_dead_times(const Chain& c, GrooveRun& s) const {
   const RunBasis& d = *s.basis;
   const double t0 = t0_;
   const double* A = A_.data() + s.offset;
@@ -157,7 +157,7 @@ void QuietPhase::set_dead_times(const Chain& c, Segment& s) const {
 void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
   t0_ = t0;
   sample_valid_ = false;
-  for (Segment& s : segs_) {
+  for (GrooveRun& s : segs_) {
     project(c, s, u, v);
     set_dead_times(c, s);
   }
@@ -166,7 +166,7 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
   for (Edge& e : edges_) {
     double a = c.driving_force(e.block, u, v, t0), b = c.K_s * c.v_slider;
     for (int n = 0; n < e.nseg; ++n) {
-      const Segment& s = segs_[e.seg[n]];
+      const GrooveRun& s = segs_[e.seg[n]];
       const RunBasis& d = *s.basis;
       b += c.K_int * B_[s.offset + e.row[n]];
       for (int k = 0; k < s.n; ++k) a -= c.K_int * d.Q(e.row[n], k) * q0_[s.offset + k];
@@ -177,14 +177,14 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
 
 double QuietPhase::all_dead_after() const {
   double tau = 0;
-  for (const Segment& s : segs_) tau = std::max(tau, s.sample_dead_tau);
+  for (const GrooveRun& s : segs_) tau = std::max(tau, s.sample_dead_tau);
   return t0_ + tau;
 }
 
 void QuietPhase::affine_forces(const Chain& c, const double* u, double* a, double* b) const {
   // A groove neighbour j of a contact block sits at A_j + B_j t; a stuck neighbour at u_j.
   std::vector<double> gA(c.N, 0.0), gB(c.N, 0.0);
-  for (const Segment& sg : segs_)
+  for (const GrooveRun& sg : segs_)
     for (int r = 0; r < sg.n; ++r) gA[sg.first + r] = A_[sg.offset + r], gB[sg.first + r] = B_[sg.offset + r];
   for (int i = 0; i < c.N; ++i) {
     a[i] = b[i] = 0.0;

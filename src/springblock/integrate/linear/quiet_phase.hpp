@@ -77,7 +77,7 @@ class QuietPhase {
   void affine_forces(const Chain& c, const double* u, double* a, double* b) const;
 
  private:
-  struct Segment {
+  struct GrooveRun {
     int first, n;
     const RunBasis* basis;
     int offset;  // into the flat per-phase arrays
@@ -97,18 +97,18 @@ class QuietPhase {
 
   // begin()'s work per segment: the particular solution and the modal coordinates of the
   // deviation from it; the times after which the modes no longer count.
-  void project(const Chain& c, const Segment& s, const double* u, const double* v);
-  void set_dead_times(const Chain& c, Segment& s) const;
+  void project(const Chain& c, const GrooveRun& s, const double* u, const double* v);
+  void set_dead_times(const Chain& c, GrooveRun& s) const;
   // u, v of segment s at absolute time t from its modal coordinates q, qd.
-  void to_physical(const Segment& s, double t, bool live, const double* q, const double* qd, double* u,
+  void to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
                    double* v) const;
   // The same for row r of the segment only (q = nullptr: the affine part alone).
-  void row_to_physical(const Segment& s, int r, double t, const double* q, const double* qd, double* u,
+  void row_to_physical(const GrooveRun& s, int r, double t, const double* q, const double* qd, double* u,
                        double* v) const;
 
   double K_int_ = 0, t0_ = 0;
   RunBases bases_;
-  std::vector<Segment> segs_;
+  std::vector<GrooveRun> segs_;
   std::vector<Edge> edges_;
   std::vector<int> affine_blocks_;     // contact blocks with no groove neighbour
   std::vector<double> affine_a_;       // their force at t0

@@ -7,7 +7,7 @@
 
 namespace sb::event_detail {
 
-void QuietPhase::to_physical(const Segment& s, double t, bool live, const double* q, const double* qd,
+void QuietPhase::to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd,
                              double* u, double* v) const {
   const RunBasis& d = *s.basis;
   for (int r = 0; r < s.n; ++r) {
@@ -28,7 +28,7 @@ void QuietPhase::to_physical(const Segment& s, double t, bool live, const double
   }
 }
 
-void QuietPhase::row_to_physical(const Segment& s, int r, double t, const double* q, const double* qd,
+void QuietPhase::row_to_physical(const GrooveRun& s, int r, double t, const double* q, const double* qd,
                                  double* u, double* v) const {
   const RunBasis& d = *s.basis;
   double du = 0, dv = 0;
@@ -50,7 +50,7 @@ void QuietPhase::row_to_physical(const Segment& s, int r, double t, const double
 void QuietPhase::evaluate(double t, double* u, double* v) const {
   const double tau = t - t0_;
   double q[64], qd[64];  // modes evaluated in blocks of 64: no allocation
-  for (const Segment& s : segs_) {
+  for (const GrooveRun& s : segs_) {
     const RunBasis& d = *s.basis;
     const bool live = tau <= s.dead_tau;
     to_physical(s, t, false, nullptr, nullptr, u, v);
@@ -82,7 +82,7 @@ void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
   const bool step = sample_valid_ && sample_dt_ > 0 && std::fabs((t - ts_) - sample_dt_) <= 1e-9 * sample_dt_ &&
                     ++since_sync_ < 64;
   if (!step) since_sync_ = 0;
-  for (const Segment& s : segs_) {
+  for (const GrooveRun& s : segs_) {
     // An observer that reads only contact forces (ends_only) takes the modes as gone once they
     // are below the settle scales; one that reads every row gets them to round-off.
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);

@@ -9,7 +9,7 @@ namespace sb::event_detail {
 template <bool Coupled, bool Damped>
 void EventRun::run() {
   sw_.sync(c_, s_);
-  sw_.settle(c_, s_, true);
+  sw_.apply(c_, s_, true);
   reclassify();
   obs_.sample(c_, s_);
   while (s_.t < t_end_ && !obs_.wants_stop()) {

@@ -42,7 +42,7 @@ bool EventRun::quiet_phase() {
   quiet_->evaluate(next.t, s_.u.data(), s_.v.data());
   s_.t = next.t;
   if (next.block >= 0) sw_.flag(next.block);
-  if (sw_.settle(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
+  if (sw_.apply(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
   // Every groove is exact at s.t. Grooves settled before the quiet phase stay settled: their
   // stuck ends have not moved, so their A + B t is still their path.
   reclassify();

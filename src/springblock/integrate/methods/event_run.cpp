@@ -49,7 +49,7 @@ void EventRun::switch_now() {
     active_.materialise(s_.t, s_.u.data(), s_.v.data());
   else
     active_.materialise_near(s_.t, s_.u.data(), s_.v.data(), sw_.flagged());
-  if (sw_.settle(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
+  if (sw_.apply(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
   reclassify();
 }
 

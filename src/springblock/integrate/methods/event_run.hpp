@@ -61,7 +61,7 @@ class EventRun {
 
   // After every switch: which runs are stepped, which stuck blocks are watched.
   void reclassify();
-  // Settle the switches flagged at s.t (see event_run.cpp).
+  // Apply the switching rules to the blocks flagged at s.t (see event_run.cpp).
   void switch_now();
   // The stepped blocks take the end of the last attempted step.
   void take_step_end(const std::vector<BlockRange>& spans);

@@ -90,7 +90,7 @@ class Solver {
   double slip_time(int i, double t) const;
   void schedule(int i, double t_next);
   // Apply the stick/slip rules to block i at time t (after its event, or at the start).
-  void settle(int i, double t, bool event_here);
+  void apply_rules_at(int i, double t, bool event_here);
   void materialise(double t);
   // Block i's friction force as a + b t until its next event: a stuck block's is its driving
   // force K_s (v t - u_i), a sliding block's its constant kinetic friction (for sample_affine).
@@ -179,7 +179,7 @@ void Solver::schedule(int i, double t_next) {
   if (t_next < kInf) queue_.push({t_next, i, b.version});
 }
 
-void Solver::settle(int i, double t, bool event_here) {
+void Solver::apply_rules_at(int i, double t, bool event_here) {
   if (t != instant_) {
     instant_ = t;
     at_instant_ = 0;
@@ -225,7 +225,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       schedule(i, first_stop(i));
       update_friction(i);
     } else {
-      settle(i, t0, false);
+      apply_rules_at(i, t0, false);
     }
   }
   const bool friction_only = obs.reads_only_friction();
@@ -251,7 +251,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
         s_.u[i] = u;
         s_.v[i] = 0.0;
       }
-      settle(i, t_event, true);
+      apply_rules_at(i, t_event, true);
       ++s_.steps;
       continue;
     }
