@@ -15,6 +15,7 @@
 
 #include "springblock/integrate/integrator.hpp"
 #include "springblock/observe/fan_out.hpp"
+#include "springblock/trajectory_spec.hpp"
 
 namespace sb {
 
@@ -101,7 +102,7 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
 
 namespace {
 
-// Repetition `rep` of several scenes that share one trajectory (see trajectory_key): simulated
+// Repetition `rep` of several scenes that share one trajectory (equal TrajectorySpec): simulated
 // once, to the longest duration, with one observer per scene behind a FanOut. scenes[0] is the
 // longest; it is charged the wall time, the others record 0 (their cost is in its run).
 std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& scenes, int rep,
@@ -137,17 +138,6 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
   return out;
 }
 
-// Scenes with equal keys simulate the same trajectory: they differ at most in the extraction
-// rules (how mu_s and mu_d are read off mu(t)), the observables kept for repetition 0, the run
-// length and the thread count. Scenes that stop at their first slip are not shared (their run
-// length is decided by the observer).
-std::string trajectory_key(const Scene& s) {
-  if (s.run.stop_after_mu_s) return {};
-  nlohmann::json j = s;
-  for (const char* k : {"duration_s", "peak_rule", "peak_drop", "mu_d_skip_t0"}) j.erase(k);
-  return j.dump();
-}
-
 // The per-scene statistics from its repetitions.
 void summarize_runs(EnsembleResult& out) {
   std::vector<double> ms, mss, md, mds, tp;
@@ -179,16 +169,16 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
   // k leads it, and is empty for the other members.
   std::vector<std::vector<int>> members(n_scenes);
   {
-    std::map<std::string, std::size_t> group_of;
+    std::map<TrajectorySpec, std::size_t> group_of;
     std::vector<std::vector<int>> groups;
     for (int k = 0; k < n_scenes; ++k) {
-      const std::string key = trajectory_key(scenes[k]);
-      const auto it = key.empty() ? group_of.end() : group_of.find(key);
+      const auto spec = trajectory_spec(scenes[k]);
+      const auto it = spec ? group_of.find(*spec) : group_of.end();
       if (it != group_of.end()) {
         groups[it->second].push_back(k);
         continue;
       }
-      if (!key.empty()) group_of[key] = groups.size();
+      if (spec) group_of.emplace(*spec, groups.size());
       groups.push_back({k});
     }
     for (auto& g : groups) {

@@ -62,9 +62,10 @@ EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interru
 // is what run_ensemble would give it (same seeds, same order); its wall_s is its share, the sum
 // of its repetitions' wall times over the threads. `progress` gets the overall fraction,
 // each scene weighted by `weights` (default: reps x duration x N).
-// Scenes that differ only in extraction rules, run length or kept observables (and do not stop
-// at their first slip) share one simulation: the longest runs, the others observe it
-// (observe/fan_out.hpp) and name it in trajectory_from.
+// Scenes with equal trajectory specs (trajectory_spec.hpp: they differ only in extraction
+// rules, run length or kept observables, and do not stop at their first slip) share one
+// simulation: the longest runs, the others observe it (observe/fan_out.hpp) and name it in
+// trajectory_from.
 std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes,
                                           const std::atomic<bool>* interrupt = nullptr,
                                           std::function<void(double fraction, double elapsed_s)> progress = {},
