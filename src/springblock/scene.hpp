@@ -44,8 +44,9 @@ struct Scene {
 // Throws InputError naming the field, the value and the allowed range.
 void validate(const Scene& s);
 
-// Build the chain of repetition `rep`: contact mask (random surfaces draw theirs from the
-// repetition's stream), micro coefficients drawn from the repetition's Gaussian stream.
+// Build the chain of repetition `rep` of a validated scene (its surface is not checked again):
+// contact mask (random surfaces draw theirs from the repetition's stream), micro coefficients
+// drawn from the repetition's Gaussian stream.
 Chain build_chain(const Scene& s, int rep);
 
 // Seed of repetition `rep` from the scene seed: a SplitMix64 hash, so streams of different
