@@ -156,129 +156,184 @@ void summarize_runs(EnsembleResult& out) {
   out.contact_fraction = out.runs.empty() ? 0 : out.runs[0].contact_fraction;
 }
 
-}  // namespace
-
-std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, const std::atomic<bool>* interrupt,
-                                          std::function<void(double, double)> progress,
-                                          const std::vector<double>& weights) {
-  const auto wall0 = std::chrono::steady_clock::now();
+// Scenes that see the same trajectory (equal TrajectorySpec) form a group, simulated once by its
+// longest member (the first of the longest on a tie). Returns, for each scene k, its group,
+// longest first, when k leads it, and nothing for the other members; their trajectory_from in
+// `out` names the leader.
+std::vector<std::vector<int>> group_by_trajectory(const std::vector<Scene>& scenes, std::vector<EnsembleResult>& out) {
   const int n_scenes = static_cast<int>(scenes.size());
-  std::vector<EnsembleResult> out(n_scenes);
-  // Scenes that see the same trajectory form a group, simulated once by its longest member
-  // (the first of the longest on a tie): members[k] lists scene k's group, longest first, when
-  // k leads it, and is empty for the other members.
-  std::vector<std::vector<int>> members(n_scenes);
-  {
-    std::map<TrajectorySpec, std::size_t> group_of;
-    std::vector<std::vector<int>> groups;
-    for (int k = 0; k < n_scenes; ++k) {
-      const auto spec = trajectory_spec(scenes[k]);
-      const auto it = spec ? group_of.find(*spec) : group_of.end();
-      if (it != group_of.end()) {
-        groups[it->second].push_back(k);
-        continue;
-      }
-      if (spec) group_of.emplace(*spec, groups.size());
-      groups.push_back({k});
-    }
-    for (auto& g : groups) {
-      std::stable_sort(g.begin(), g.end(), [&](int a, int b) { return scenes[a].duration() > scenes[b].duration(); });
-      for (int m : g)
-        if (m != g.front()) out[m].trajectory_from = g.front();
-      members[g.front()] = std::move(g);
-    }
-  }
-  // One job per (group, repetition), in scene order: a thread that finishes its last
-  // repetition of one scene starts on the next scene instead of waiting for the others.
-  struct Job {
-    int scene, rep;
-  };
-  std::vector<Job> jobs;
+  std::map<TrajectorySpec, std::size_t> group_of;
+  std::vector<std::vector<int>> groups;
   for (int k = 0; k < n_scenes; ++k) {
-    out[k].runs.resize(scenes[k].reps);
-    if (members[k].empty()) continue;
-    for (int r = 0; r < scenes[k].reps; ++r) jobs.push_back({k, r});
+    const auto spec = trajectory_spec(scenes[k]);
+    const auto it = spec ? group_of.find(*spec) : group_of.end();
+    if (it != group_of.end()) {
+      groups[it->second].push_back(k);
+      continue;
+    }
+    if (spec) group_of.emplace(*spec, groups.size());
+    groups.push_back({k});
   }
-  const int n_jobs = static_cast<int>(jobs.size());
-  std::vector<std::atomic<std::int64_t>> progress_ns(n_jobs);
-  std::vector<char> finished(n_jobs, 0);
-  // Progress: each scene's fraction of simulated time, weighted (by default by reps x duration x N).
-  std::vector<double> job_weight(n_jobs);
-  double weight_total = 0;
-  for (int j = 0; j < n_jobs; ++j) {
-    const Scene& sc = scenes[jobs[j].scene];
-    const double w = weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[jobs[j].scene];
-    job_weight[j] = w / sc.reps / (sc.duration() * 1e9);
-    weight_total += w / sc.reps;
+  std::vector<std::vector<int>> members(n_scenes);
+  for (auto& g : groups) {
+    std::stable_sort(g.begin(), g.end(), [&](int a, int b) { return scenes[a].duration() > scenes[b].duration(); });
+    for (int m : g)
+      if (m != g.front()) out[m].trajectory_from = g.front();
+    members[g.front()] = std::move(g);
+  }
+  return members;
+}
+
+struct Job {
+  int scene, rep;
+};
+
+// One job per (group, repetition), in scene order: a thread that finishes its last repetition of
+// one scene starts on the next scene instead of waiting for the others.
+std::vector<Job> make_jobs(const std::vector<Scene>& scenes, const std::vector<std::vector<int>>& members) {
+  std::vector<Job> jobs;
+  for (int k = 0; k < static_cast<int>(scenes.size()); ++k)
+    if (!members[k].empty())
+      for (int r = 0; r < scenes[k].reps; ++r) jobs.push_back({k, r});
+  return jobs;
+}
+
+// Calls `progress` from its own thread about once a second, until destroyed, with the overall
+// fraction: each job's simulated time over its duration, weighted by its scene's weight (by
+// default reps x duration x N) shared among the scene's repetitions.
+class ProgressReporter {
+ public:
+  ProgressReporter(std::function<void(double, double)> progress, const std::vector<Scene>& scenes,
+                   const std::vector<Job>& jobs, const std::vector<double>& weights,
+                   const std::vector<std::atomic<std::int64_t>>& progress_ns,
+                   std::chrono::steady_clock::time_point wall0)
+      : progress_(std::move(progress)), progress_ns_(progress_ns), wall0_(wall0), job_weight_(jobs.size()) {
+    if (!progress_) return;
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+      const Scene& sc = scenes[jobs[j].scene];
+      const double w = weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[jobs[j].scene];
+      job_weight_[j] = w / sc.reps / (sc.duration() * 1e9);
+      weight_total_ += w / sc.reps;
+    }
+    thread_ = std::thread([this] { report(); });
+  }
+  ~ProgressReporter() {
+    {
+      std::lock_guard lock(mu_);
+      done_ = true;
+    }
+    cv_.notify_all();
+    if (thread_.joinable()) thread_.join();
   }
 
-  std::mutex mu;
-  std::condition_variable cv;
-  bool done = false;
-  std::thread reporter;
-  if (progress) {
-    reporter = std::thread([&] {
-      std::unique_lock lock(mu);
-      while (!cv.wait_for(lock, std::chrono::seconds(1), [&] { return done; })) {
-        double f = 0;
-        for (int j = 0; j < n_jobs; ++j)
-          f += job_weight[j] * static_cast<double>(progress_ns[j].load(std::memory_order_relaxed));
-        progress(f / weight_total, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
-      }
-    });
+ private:
+  void report() {
+    std::unique_lock lock(mu_);
+    while (!cv_.wait_for(lock, std::chrono::seconds(1), [&] { return done_; })) {
+      double f = 0;
+      for (std::size_t j = 0; j < job_weight_.size(); ++j)
+        f += job_weight_[j] * static_cast<double>(progress_ns_[j].load(std::memory_order_relaxed));
+      progress_(f / weight_total_, seconds_since(wall0_));
+    }
   }
 
+  std::function<void(double, double)> progress_;
+  const std::vector<std::atomic<std::int64_t>>& progress_ns_;
+  std::chrono::steady_clock::time_point wall0_;
+  std::vector<double> job_weight_;
+  double weight_total_ = 0;
+  std::mutex mu_;
+  std::condition_variable cv_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+// Threads over the jobs: the most any scene asks for (0 = OpenMP's default), at most one a job.
+int pool_threads(const std::vector<Scene>& scenes, std::size_t n_jobs) {
   int threads = 1;
   for (const Scene& sc : scenes) threads = std::max(threads, sc.threads > 0 ? sc.threads : omp_get_max_threads());
-  threads = std::max(1, std::min(threads, n_jobs));
-  // An exception may not leave an OpenMP region (that is std::terminate): record it, let the
-  // other threads skip their remaining repetitions, and rethrow the lowest-index one afterwards.
+  return std::max(1, std::min(threads, static_cast<int>(n_jobs)));
+}
+
+// Job `job`: a repetition of a scene of its own, or of a group observed on one run.
+void run_job(const std::vector<Scene>& scenes, const std::vector<int>& group, Job job,
+             const std::atomic<bool>* interrupt, std::atomic<std::int64_t>* progress_ns,
+             std::vector<EnsembleResult>& out) {
+  if (group.size() == 1) {
+    out[job.scene].runs[job.rep] = run_repetition(scenes[job.scene], job.rep, interrupt, progress_ns);
+    return;
+  }
+  std::vector<const Scene*> views;
+  for (int m : group) views.push_back(&scenes[m]);
+  auto runs = run_shared_repetition(views, job.rep, interrupt, progress_ns);
+  for (std::size_t v = 0; v < group.size(); ++v) out[group[v]].runs[job.rep] = std::move(runs[v]);
+}
+
+// Runs every job on `threads` threads; returns which finished (a repetition cut short by an
+// interrupt is not a result). An exception may not leave an OpenMP region (that is
+// std::terminate): it is recorded, the other threads skip their remaining jobs, and the
+// lowest-index one is rethrown afterwards.
+std::vector<char> run_jobs(const std::vector<Scene>& scenes, const std::vector<std::vector<int>>& members,
+                           const std::vector<Job>& jobs, int threads, const std::atomic<bool>* interrupt,
+                           std::vector<std::atomic<std::int64_t>>& progress_ns, std::vector<EnsembleResult>& out) {
+  const int n_jobs = static_cast<int>(jobs.size());
+  std::vector<char> finished(n_jobs, 0);
   std::vector<std::exception_ptr> errors(n_jobs);
   std::atomic<bool> failed{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int j = 0; j < n_jobs; ++j) {
     if ((interrupt && interrupt->load()) || failed.load()) continue;
-    const Job job = jobs[j];
     try {
-      const auto& group = members[job.scene];
-      if (group.size() == 1) {
-        out[job.scene].runs[job.rep] = run_repetition(scenes[job.scene], job.rep, interrupt, &progress_ns[j]);
-      } else {
-        std::vector<const Scene*> views;
-        for (int m : group) views.push_back(&scenes[m]);
-        auto runs = run_shared_repetition(views, job.rep, interrupt, &progress_ns[j]);
-        for (std::size_t v = 0; v < group.size(); ++v) out[group[v]].runs[job.rep] = std::move(runs[v]);
-      }
-      // A repetition cut short by an interrupt is not a result.
+      run_job(scenes, members[jobs[j].scene], jobs[j], interrupt, &progress_ns[j], out);
       finished[j] = !(interrupt && interrupt->load());
     } catch (...) {
       errors[j] = std::current_exception();
       failed.store(true);
     }
   }
-  {
-    std::lock_guard lock(mu);
-    done = true;
-  }
-  cv.notify_all();
-  if (reporter.joinable()) reporter.join();
-
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
-  for (int j = 0; j < n_jobs; ++j)
+  return finished;
+}
+
+// Counts, statistics and wall time of each scene once its jobs are done.
+void finish(const std::vector<Scene>& scenes, const std::vector<std::vector<int>>& members,
+            const std::vector<Job>& jobs, const std::vector<char>& finished, int threads,
+            std::vector<EnsembleResult>& out) {
+  for (std::size_t j = 0; j < jobs.size(); ++j)
     for (int m : members[jobs[j].scene]) out[m].finished_reps += finished[j];
-  for (int k = 0; k < n_scenes; ++k) {
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
     EnsembleResult& e = out[k];
     e.interrupted = e.finished_reps < scenes[k].reps;
     e.threads = std::min(threads, std::max(1, scenes[k].reps));
     summarize_runs(e);
     // Pooled with other scenes, a scene has no wall time of its own: its share is its
-    // repetitions' time over the threads (for a single scene, its wall time below).
+    // repetitions' time over the threads (for a single scene, its wall time: run_ensembles).
     double rep_s = 0;
     for (const auto& r : e.runs) rep_s += r.wall_s;
     e.wall_s = rep_s / threads;
   }
-  if (n_scenes == 1) out[0].wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+}
+
+}  // namespace
+
+std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, const std::atomic<bool>* interrupt,
+                                          std::function<void(double, double)> progress,
+                                          const std::vector<double>& weights) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  std::vector<EnsembleResult> out(scenes.size());
+  for (std::size_t k = 0; k < scenes.size(); ++k) out[k].runs.resize(scenes[k].reps);
+  const auto members = group_by_trajectory(scenes, out);
+  const auto jobs = make_jobs(scenes, members);
+  std::vector<std::atomic<std::int64_t>> progress_ns(jobs.size());
+  const int threads = pool_threads(scenes, jobs.size());
+  std::vector<char> finished;
+  {
+    ProgressReporter reporter(std::move(progress), scenes, jobs, weights, progress_ns, wall0);
+    finished = run_jobs(scenes, members, jobs, threads, interrupt, progress_ns, out);
+  }
+  finish(scenes, members, jobs, finished, threads, out);
+  if (scenes.size() == 1) out[0].wall_s = seconds_since(wall0);
   return out;
 }
 
