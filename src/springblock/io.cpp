@@ -96,28 +96,23 @@ nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const 
     if (const auto why = not_measured(scene, r, quantity); !why.empty()) j["not_measured"] = why;
     return j;
   };
-  return {{"mu_s", stat(r.mu_s, "mu_s")},
-          {"mu_s_signed", stat(r.mu_s_signed, "mu_s")},
-          {"mu_d", stat(r.mu_d, "mu_d")},
-          {"mu_d_signed", stat(r.mu_d_signed, "mu_d")},
-          {"t_peak_s", r.t_peak_s},
-          {"reps", scene.reps},
-          {"reps_slipped", slipped},
-          {"seed", scene.seed},
-          {"contact_fraction", r.contact_fraction},
-          {"method", method_name(scene.run.method)},
-          {"dt", scene.run.dt_s},
-          {"tol", scene.run.tol},
-          {"modal_max_run", scene.run.modal_max_run},
-          {"modal_max_groove", scene.run.modal_max_groove},
-          {"duration", scene.duration()},
-          {"wall_seconds", r.wall_s},
-          {"threads", r.threads},
-          {"steps_total", steps},
-          {"rhs_evals_total", rhs},
-          {"scene", scene},
-          {"runs", runs},
-          {"provenance", provenance(command_line)}};
+  const nlohmann::json scene_json = scene;
+  nlohmann::json j = {{"mu_s", stat(r.mu_s, "mu_s")},
+                      {"mu_s_signed", stat(r.mu_s_signed, "mu_s")},
+                      {"mu_d", stat(r.mu_d, "mu_d")},
+                      {"mu_d_signed", stat(r.mu_d_signed, "mu_d")},
+                      {"t_peak_s", r.t_peak_s},
+                      {"reps_slipped", slipped},
+                      {"contact_fraction", r.contact_fraction},
+                      {"wall_seconds", r.wall_s},
+                      {"threads", r.threads},
+                      {"steps_total", steps},
+                      {"rhs_evals_total", rhs},
+                      {"scene", scene_json},
+                      {"runs", runs},
+                      {"provenance", provenance(command_line)}};
+  j.update(schema_entries(scene_json));
+  return j;
 }
 
 std::string series_tsv(const Scene& scene, const EnsembleResult& r, const std::string& command_line) {

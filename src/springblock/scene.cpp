@@ -5,9 +5,7 @@
 
 #include <cmath>
 #include <memory>
-#include <nlohmann/json.hpp>
 
-#include "springblock/scene_fields.hpp"
 #include "springblock/errors.hpp"
 
 namespace sb {
@@ -89,46 +87,6 @@ Chain build_chain(const Scene& s, int rep) {
     c.f_kinetic[i] = md * c.F_n;
   }
   return c;
-}
-
-void to_json(nlohmann::json& j, const Scene& s) {
-  j = nlohmann::json{{"material", s.material},
-                     {"geometry", s.geometry},
-                     {"friction", s.friction},
-                     {"k_int_scale", s.k_int_scale},
-                     {"pattern", s.pattern.text()},
-                     {"layout", s.pattern.layout_text()},
-                     {"derived", s.derived()},
-                     {"method", method_name(s.run.method)},
-                     {"dt_s", s.run.dt_s},
-                     {"tol", s.run.tol},
-                     {"modal_max_run", s.run.modal_max_run},
-                     {"modal_max_groove", s.run.modal_max_groove},
-                     {"duration_s", s.duration()},
-                     {"t0_s", s.t0_s()},
-                     {"sample_dt_s", s.run.sample_dt_s},
-                     {"stop_after_mu_s", s.run.stop_after_mu_s},
-                     {"peak_rule", s.rules.peak_rule == ExtractionRules::PeakRule::AllSlipped ? "all_slipped" : "drop"},
-                     {"peak_drop", s.rules.peak_drop},
-                     {"mu_d_skip_t0", s.rules.mu_d_skip_t0},
-                     {"reps", s.reps},
-                     {"seed", s.seed}};
-}
-
-void apply_scene_json(Scene& s, const nlohmann::json& j) {
-  if (!j.is_object()) throw InputError("scene", "a scene file must hold one JSON object");
-  for (auto& [key, value] : j.items()) {
-    std::string text;
-    if (value.is_string()) text = value.get<std::string>();
-    else if (value.is_number_integer()) text = std::to_string(value.get<long long>());
-    else if (value.is_number()) {
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "%.17g", value.get<double>());
-      text = buf;
-    } else if (value.is_boolean()) text = value.get<bool>() ? "true" : "false";
-    else throw InputError(key, "must be a string, number or boolean");
-    set_scene_field(s, key, text);
-  }
 }
 
 }  // namespace sb
