@@ -37,6 +37,14 @@ Statistic summarize(const std::vector<double>& values) {
   return s;
 }
 
+const std::vector<Observable>& observables() {
+#define SB_ROW(name, unit, extractor, summary) \
+  Observable{#name, unit, &FrictionObserver::extractor, summary, &RunResult::name, &EnsembleResult::name},
+  static const std::vector<Observable> table = {SB_OBSERVABLES(SB_ROW)};
+#undef SB_ROW
+  return table;
+}
+
 namespace {
 
 FrictionObserverConfig observer_config(const Scene& scene, const Chain& chain, int rep,
@@ -62,13 +70,7 @@ RunResult observed(const FrictionObserver& obs, const Chain& chain, int rep) {
   RunResult r;
   r.rep = rep;
   r.slipped = obs.slipped();
-  r.mu_s = obs.mu_s();
-  r.mu_s_signed = obs.mu_s_signed();
-  r.max_mu = obs.max_mu();
-  r.t_peak_s = obs.t_peak();
-  r.t_slip_s = obs.t_slip();
-  r.mu_d = obs.mu_d();
-  r.mu_d_signed = obs.mu_d_signed();
+  for (const auto& o : observables()) r.*o.value = (obs.*o.extract)();
   r.window_samples = obs.window_samples();
   r.contact_fraction = static_cast<double>(chain.n_contact) / chain.N;
   r.series = obs.series();
@@ -140,19 +142,11 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
 
 // The per-scene statistics from its repetitions.
 void summarize_runs(EnsembleResult& out) {
-  std::vector<double> ms, mss, md, mds, tp;
-  for (auto& r : out.runs) {
-    ms.push_back(r.mu_s);
-    mss.push_back(r.mu_s_signed);
-    md.push_back(r.mu_d);
-    mds.push_back(r.mu_d_signed);
-    tp.push_back(r.t_peak_s);
+  std::vector<double> values(out.runs.size());
+  for (const auto& o : observables()) {
+    for (std::size_t i = 0; i < out.runs.size(); ++i) values[i] = out.runs[i].*o.value;
+    out.*o.statistic = summarize(values);
   }
-  out.mu_s = summarize(ms);
-  out.mu_s_signed = summarize(mss);
-  out.mu_d = summarize(md);
-  out.mu_d_signed = summarize(mds);
-  out.t_peak_s = summarize(tp);
   out.contact_fraction = out.runs.empty() ? 0 : out.runs[0].contact_fraction;
 }
 
@@ -349,12 +343,10 @@ void to_json(nlohmann::json& j, const Statistic& s) {
 
 void to_json(nlohmann::json& j, const RunResult& r) {
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  j = {{"rep", r.rep},           {"slipped", r.slipped},     {"mu_s", num(r.mu_s)},
-       {"mu_s_signed", num(r.mu_s_signed)},
-       {"t_peak_s", r.t_peak_s}, {"t_slip_s", num(r.t_slip_s)}, {"max_mu", r.max_mu},
-       {"mu_d", num(r.mu_d)},    {"mu_d_signed", num(r.mu_d_signed)},
-       {"window_samples", r.window_samples}, {"steps", r.steps}, {"rhs_evals", r.rhs_evals},
-       {"switches", r.switches}, {"t_end_s", r.t_end_s},     {"wall_s", r.wall_s}};
+  j = {{"rep", r.rep},         {"slipped", r.slipped},     {"window_samples", r.window_samples},
+       {"steps", r.steps},     {"rhs_evals", r.rhs_evals}, {"switches", r.switches},
+       {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}};
+  for (const auto& o : observables()) j[o.name] = num(r.*o.value);
 }
 
 }  // namespace sb

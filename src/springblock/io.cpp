@@ -84,25 +84,27 @@ nlohmann::json provenance(const std::string& command_line) {
           {"hardware_threads", std::thread::hardware_concurrency()}};
 }
 
+namespace {
+
+// An observable's statistic; one over no repetitions has null mean, std and sem, and says why.
+nlohmann::json statistic_json(const Scene& scene, const EnsembleResult& r, const Observable& o) {
+  nlohmann::json j = r.*o.statistic;
+  const char* quantity = o.summary == Summary::Loading ? "mu_s" : o.summary == Summary::Window ? "mu_d" : nullptr;
+  if (quantity)
+    if (const auto why = not_measured(scene, r, quantity); !why.empty()) j["not_measured"] = why;
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const std::string& command_line) {
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& run : r.runs) runs.push_back(run);
   std::int64_t steps = 0, rhs = 0;
   int slipped = 0;
   for (const auto& run : r.runs) steps += run.steps, rhs += run.rhs_evals, slipped += run.slipped;
-  // A statistic over no repetitions has null mean, std and sem, and says why.
-  auto stat = [&](const Statistic& st, const std::string& quantity) {
-    nlohmann::json j = st;
-    if (const auto why = not_measured(scene, r, quantity); !why.empty()) j["not_measured"] = why;
-    return j;
-  };
   const nlohmann::json scene_json = scene;
-  nlohmann::json j = {{"mu_s", stat(r.mu_s, "mu_s")},
-                      {"mu_s_signed", stat(r.mu_s_signed, "mu_s")},
-                      {"mu_d", stat(r.mu_d, "mu_d")},
-                      {"mu_d_signed", stat(r.mu_d_signed, "mu_d")},
-                      {"t_peak_s", r.t_peak_s},
-                      {"reps_slipped", slipped},
+  nlohmann::json j = {{"reps_slipped", slipped},
                       {"contact_fraction", r.contact_fraction},
                       {"wall_seconds", r.wall_s},
                       {"threads", r.threads},
@@ -111,6 +113,8 @@ nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const 
                       {"scene", scene_json},
                       {"runs", runs},
                       {"provenance", provenance(command_line)}};
+  for (const auto& o : observables())
+    if (o.summary != Summary::None) j[o.name] = statistic_json(scene, r, o);
   j.update(schema_entries(scene_json));
   return j;
 }
