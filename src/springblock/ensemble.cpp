@@ -15,6 +15,7 @@
 
 #include "springblock/integrate/integrator.hpp"
 #include "springblock/observe/fan_out.hpp"
+#include "springblock/trajectory_spec.hpp"
 
 namespace sb {
 
@@ -34,6 +35,14 @@ Statistic summarize(const std::vector<double>& values) {
   s.std = s.n > 1 ? std::sqrt(ss / (s.n - 1)) : 0.0;  // sample standard deviation
   s.sem = s.std / std::sqrt(static_cast<double>(s.n));
   return s;
+}
+
+const std::vector<Observable>& observables() {
+#define SB_ROW(name, unit, extractor, summary) \
+  Observable{#name, unit, &FrictionObserver::extractor, summary, &RunResult::name, &EnsembleResult::name},
+  static const std::vector<Observable> table = {SB_OBSERVABLES(SB_ROW)};
+#undef SB_ROW
+  return table;
 }
 
 namespace {
@@ -61,13 +70,7 @@ RunResult observed(const FrictionObserver& obs, const Chain& chain, int rep) {
   RunResult r;
   r.rep = rep;
   r.slipped = obs.slipped();
-  r.mu_s = obs.mu_s();
-  r.mu_s_signed = obs.mu_s_signed();
-  r.max_mu = obs.max_mu();
-  r.t_peak_s = obs.t_peak();
-  r.t_slip_s = obs.t_slip();
-  r.mu_d = obs.mu_d();
-  r.mu_d_signed = obs.mu_d_signed();
+  for (const auto& o : observables()) r.*o.value = (obs.*o.extract)();
   r.window_samples = obs.window_samples();
   r.contact_fraction = static_cast<double>(chain.n_contact) / chain.N;
   r.series = obs.series();
@@ -101,7 +104,7 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
 
 namespace {
 
-// Repetition `rep` of several scenes that share one trajectory (see trajectory_key): simulated
+// Repetition `rep` of several scenes that share one trajectory (equal TrajectorySpec): simulated
 // once, to the longest duration, with one observer per scene behind a FanOut. scenes[0] is the
 // longest; it is charged the wall time, the others record 0 (their cost is in its run).
 std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& scenes, int rep,
@@ -137,33 +140,173 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
   return out;
 }
 
-// Scenes with equal keys simulate the same trajectory: they differ at most in the extraction
-// rules (how mu_s and mu_d are read off mu(t)), the observables kept for repetition 0, the run
-// length and the thread count. Scenes that stop at their first slip are not shared (their run
-// length is decided by the observer).
-std::string trajectory_key(const Scene& s) {
-  if (s.run.stop_after_mu_s) return {};
-  nlohmann::json j = s;
-  for (const char* k : {"duration_s", "peak_rule", "peak_drop", "mu_d_skip_t0"}) j.erase(k);
-  return j.dump();
-}
-
 // The per-scene statistics from its repetitions.
 void summarize_runs(EnsembleResult& out) {
-  std::vector<double> ms, mss, md, mds, tp;
-  for (auto& r : out.runs) {
-    ms.push_back(r.mu_s);
-    mss.push_back(r.mu_s_signed);
-    md.push_back(r.mu_d);
-    mds.push_back(r.mu_d_signed);
-    tp.push_back(r.t_peak_s);
+  std::vector<double> values(out.runs.size());
+  for (const auto& o : observables()) {
+    for (std::size_t i = 0; i < out.runs.size(); ++i) values[i] = out.runs[i].*o.value;
+    out.*o.statistic = summarize(values);
   }
-  out.mu_s = summarize(ms);
-  out.mu_s_signed = summarize(mss);
-  out.mu_d = summarize(md);
-  out.mu_d_signed = summarize(mds);
-  out.t_peak_s = summarize(tp);
   out.contact_fraction = out.runs.empty() ? 0 : out.runs[0].contact_fraction;
+}
+
+// Scenes that see the same trajectory (equal TrajectorySpec) form a group, simulated once by its
+// longest member (the first of the longest on a tie). Returns, for each scene k, its group,
+// longest first, when k leads it, and nothing for the other members; their trajectory_from in
+// `out` names the leader.
+std::vector<std::vector<int>> group_by_trajectory(const std::vector<Scene>& scenes, std::vector<EnsembleResult>& out) {
+  const int n_scenes = static_cast<int>(scenes.size());
+  std::map<TrajectorySpec, std::size_t> group_of;
+  std::vector<std::vector<int>> groups;
+  for (int k = 0; k < n_scenes; ++k) {
+    const auto spec = trajectory_spec(scenes[k]);
+    const auto it = spec ? group_of.find(*spec) : group_of.end();
+    if (it != group_of.end()) {
+      groups[it->second].push_back(k);
+      continue;
+    }
+    if (spec) group_of.emplace(*spec, groups.size());
+    groups.push_back({k});
+  }
+  std::vector<std::vector<int>> members(n_scenes);
+  for (auto& g : groups) {
+    std::stable_sort(g.begin(), g.end(), [&](int a, int b) { return scenes[a].duration() > scenes[b].duration(); });
+    for (int m : g)
+      if (m != g.front()) out[m].trajectory_from = g.front();
+    members[g.front()] = std::move(g);
+  }
+  return members;
+}
+
+struct Job {
+  int scene, rep;
+};
+
+// One job per (group, repetition), in scene order: a thread that finishes its last repetition of
+// one scene starts on the next scene instead of waiting for the others.
+std::vector<Job> make_jobs(const std::vector<Scene>& scenes, const std::vector<std::vector<int>>& members) {
+  std::vector<Job> jobs;
+  for (int k = 0; k < static_cast<int>(scenes.size()); ++k)
+    if (!members[k].empty())
+      for (int r = 0; r < scenes[k].reps; ++r) jobs.push_back({k, r});
+  return jobs;
+}
+
+// Calls `progress` from its own thread about once a second, until destroyed, with the overall
+// fraction: each job's simulated time over its duration, weighted by its scene's weight (by
+// default reps x duration x N) shared among the scene's repetitions.
+class ProgressReporter {
+ public:
+  ProgressReporter(std::function<void(double, double)> progress, const std::vector<Scene>& scenes,
+                   const std::vector<Job>& jobs, const std::vector<double>& weights,
+                   const std::vector<std::atomic<std::int64_t>>& progress_ns,
+                   std::chrono::steady_clock::time_point wall0)
+      : progress_(std::move(progress)), progress_ns_(progress_ns), wall0_(wall0), job_weight_(jobs.size()) {
+    if (!progress_) return;
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+      const Scene& sc = scenes[jobs[j].scene];
+      const double w = weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[jobs[j].scene];
+      job_weight_[j] = w / sc.reps / (sc.duration() * 1e9);
+      weight_total_ += w / sc.reps;
+    }
+    thread_ = std::thread([this] { report(); });
+  }
+  ~ProgressReporter() {
+    {
+      std::lock_guard lock(mu_);
+      done_ = true;
+    }
+    cv_.notify_all();
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  void report() {
+    std::unique_lock lock(mu_);
+    while (!cv_.wait_for(lock, std::chrono::seconds(1), [&] { return done_; })) {
+      double f = 0;
+      for (std::size_t j = 0; j < job_weight_.size(); ++j)
+        f += job_weight_[j] * static_cast<double>(progress_ns_[j].load(std::memory_order_relaxed));
+      progress_(f / weight_total_, seconds_since(wall0_));
+    }
+  }
+
+  std::function<void(double, double)> progress_;
+  const std::vector<std::atomic<std::int64_t>>& progress_ns_;
+  std::chrono::steady_clock::time_point wall0_;
+  std::vector<double> job_weight_;
+  double weight_total_ = 0;
+  std::mutex mu_;
+  std::condition_variable cv_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+// Threads over the jobs: the most any scene asks for (0 = OpenMP's default), at most one a job.
+int pool_threads(const std::vector<Scene>& scenes, std::size_t n_jobs) {
+  int threads = 1;
+  for (const Scene& sc : scenes) threads = std::max(threads, sc.threads > 0 ? sc.threads : omp_get_max_threads());
+  return std::max(1, std::min(threads, static_cast<int>(n_jobs)));
+}
+
+// Job `job`: a repetition of a scene of its own, or of a group observed on one run.
+void run_job(const std::vector<Scene>& scenes, const std::vector<int>& group, Job job,
+             const std::atomic<bool>* interrupt, std::atomic<std::int64_t>* progress_ns,
+             std::vector<EnsembleResult>& out) {
+  if (group.size() == 1) {
+    out[job.scene].runs[job.rep] = run_repetition(scenes[job.scene], job.rep, interrupt, progress_ns);
+    return;
+  }
+  std::vector<const Scene*> views;
+  for (int m : group) views.push_back(&scenes[m]);
+  auto runs = run_shared_repetition(views, job.rep, interrupt, progress_ns);
+  for (std::size_t v = 0; v < group.size(); ++v) out[group[v]].runs[job.rep] = std::move(runs[v]);
+}
+
+// Runs every job on `threads` threads; returns which finished (a repetition cut short by an
+// interrupt is not a result). An exception may not leave an OpenMP region (that is
+// std::terminate): it is recorded, the other threads skip their remaining jobs, and the
+// lowest-index one is rethrown afterwards.
+std::vector<char> run_jobs(const std::vector<Scene>& scenes, const std::vector<std::vector<int>>& members,
+                           const std::vector<Job>& jobs, int threads, const std::atomic<bool>* interrupt,
+                           std::vector<std::atomic<std::int64_t>>& progress_ns, std::vector<EnsembleResult>& out) {
+  const int n_jobs = static_cast<int>(jobs.size());
+  std::vector<char> finished(n_jobs, 0);
+  std::vector<std::exception_ptr> errors(n_jobs);
+  std::atomic<bool> failed{false};
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int j = 0; j < n_jobs; ++j) {
+    if ((interrupt && interrupt->load()) || failed.load()) continue;
+    try {
+      run_job(scenes, members[jobs[j].scene], jobs[j], interrupt, &progress_ns[j], out);
+      finished[j] = !(interrupt && interrupt->load());
+    } catch (...) {
+      errors[j] = std::current_exception();
+      failed.store(true);
+    }
+  }
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return finished;
+}
+
+// Counts, statistics and wall time of each scene once its jobs are done.
+void finish(const std::vector<Scene>& scenes, const std::vector<std::vector<int>>& members,
+            const std::vector<Job>& jobs, const std::vector<char>& finished, int threads,
+            std::vector<EnsembleResult>& out) {
+  for (std::size_t j = 0; j < jobs.size(); ++j)
+    for (int m : members[jobs[j].scene]) out[m].finished_reps += finished[j];
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    EnsembleResult& e = out[k];
+    e.interrupted = e.finished_reps < scenes[k].reps;
+    e.threads = std::min(threads, std::max(1, scenes[k].reps));
+    summarize_runs(e);
+    // Pooled with other scenes, a scene has no wall time of its own: its share is its
+    // repetitions' time over the threads (for a single scene, its wall time: run_ensembles).
+    double rep_s = 0;
+    for (const auto& r : e.runs) rep_s += r.wall_s;
+    e.wall_s = rep_s / threads;
+  }
 }
 
 }  // namespace
@@ -172,123 +315,19 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
                                           std::function<void(double, double)> progress,
                                           const std::vector<double>& weights) {
   const auto wall0 = std::chrono::steady_clock::now();
-  const int n_scenes = static_cast<int>(scenes.size());
-  std::vector<EnsembleResult> out(n_scenes);
-  // Scenes that see the same trajectory form a group, simulated once by its longest member
-  // (the first of the longest on a tie): members[k] lists scene k's group, longest first, when
-  // k leads it, and is empty for the other members.
-  std::vector<std::vector<int>> members(n_scenes);
+  std::vector<EnsembleResult> out(scenes.size());
+  for (std::size_t k = 0; k < scenes.size(); ++k) out[k].runs.resize(scenes[k].reps);
+  const auto members = group_by_trajectory(scenes, out);
+  const auto jobs = make_jobs(scenes, members);
+  std::vector<std::atomic<std::int64_t>> progress_ns(jobs.size());
+  const int threads = pool_threads(scenes, jobs.size());
+  std::vector<char> finished;
   {
-    std::map<std::string, std::size_t> group_of;
-    std::vector<std::vector<int>> groups;
-    for (int k = 0; k < n_scenes; ++k) {
-      const std::string key = trajectory_key(scenes[k]);
-      const auto it = key.empty() ? group_of.end() : group_of.find(key);
-      if (it != group_of.end()) {
-        groups[it->second].push_back(k);
-        continue;
-      }
-      if (!key.empty()) group_of[key] = groups.size();
-      groups.push_back({k});
-    }
-    for (auto& g : groups) {
-      std::stable_sort(g.begin(), g.end(), [&](int a, int b) { return scenes[a].duration() > scenes[b].duration(); });
-      for (int m : g)
-        if (m != g.front()) out[m].trajectory_from = g.front();
-      members[g.front()] = std::move(g);
-    }
+    ProgressReporter reporter(std::move(progress), scenes, jobs, weights, progress_ns, wall0);
+    finished = run_jobs(scenes, members, jobs, threads, interrupt, progress_ns, out);
   }
-  // One job per (group, repetition), in scene order: a thread that finishes its last
-  // repetition of one scene starts on the next scene instead of waiting for the others.
-  struct Job {
-    int scene, rep;
-  };
-  std::vector<Job> jobs;
-  for (int k = 0; k < n_scenes; ++k) {
-    out[k].runs.resize(scenes[k].reps);
-    if (members[k].empty()) continue;
-    for (int r = 0; r < scenes[k].reps; ++r) jobs.push_back({k, r});
-  }
-  const int n_jobs = static_cast<int>(jobs.size());
-  std::vector<std::atomic<std::int64_t>> progress_ns(n_jobs);
-  std::vector<char> finished(n_jobs, 0);
-  // Progress: each scene's fraction of simulated time, weighted (by default by reps x duration x N).
-  std::vector<double> job_weight(n_jobs);
-  double weight_total = 0;
-  for (int j = 0; j < n_jobs; ++j) {
-    const Scene& sc = scenes[jobs[j].scene];
-    const double w = weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[jobs[j].scene];
-    job_weight[j] = w / sc.reps / (sc.duration() * 1e9);
-    weight_total += w / sc.reps;
-  }
-
-  std::mutex mu;
-  std::condition_variable cv;
-  bool done = false;
-  std::thread reporter;
-  if (progress) {
-    reporter = std::thread([&] {
-      std::unique_lock lock(mu);
-      while (!cv.wait_for(lock, std::chrono::seconds(1), [&] { return done; })) {
-        double f = 0;
-        for (int j = 0; j < n_jobs; ++j)
-          f += job_weight[j] * static_cast<double>(progress_ns[j].load(std::memory_order_relaxed));
-        progress(f / weight_total, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
-      }
-    });
-  }
-
-  int threads = 1;
-  for (const Scene& sc : scenes) threads = std::max(threads, sc.threads > 0 ? sc.threads : omp_get_max_threads());
-  threads = std::max(1, std::min(threads, n_jobs));
-  // An exception may not leave an OpenMP region (that is std::terminate): record it, let the
-  // other threads skip their remaining repetitions, and rethrow the lowest-index one afterwards.
-  std::vector<std::exception_ptr> errors(n_jobs);
-  std::atomic<bool> failed{false};
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (int j = 0; j < n_jobs; ++j) {
-    if ((interrupt && interrupt->load()) || failed.load()) continue;
-    const Job job = jobs[j];
-    try {
-      const auto& group = members[job.scene];
-      if (group.size() == 1) {
-        out[job.scene].runs[job.rep] = run_repetition(scenes[job.scene], job.rep, interrupt, &progress_ns[j]);
-      } else {
-        std::vector<const Scene*> views;
-        for (int m : group) views.push_back(&scenes[m]);
-        auto runs = run_shared_repetition(views, job.rep, interrupt, &progress_ns[j]);
-        for (std::size_t v = 0; v < group.size(); ++v) out[group[v]].runs[job.rep] = std::move(runs[v]);
-      }
-      // A repetition cut short by an interrupt is not a result.
-      finished[j] = !(interrupt && interrupt->load());
-    } catch (...) {
-      errors[j] = std::current_exception();
-      failed.store(true);
-    }
-  }
-  {
-    std::lock_guard lock(mu);
-    done = true;
-  }
-  cv.notify_all();
-  if (reporter.joinable()) reporter.join();
-
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
-  for (int j = 0; j < n_jobs; ++j)
-    for (int m : members[jobs[j].scene]) out[m].finished_reps += finished[j];
-  for (int k = 0; k < n_scenes; ++k) {
-    EnsembleResult& e = out[k];
-    e.interrupted = e.finished_reps < scenes[k].reps;
-    e.threads = std::min(threads, std::max(1, scenes[k].reps));
-    summarize_runs(e);
-    // Pooled with other scenes, a scene has no wall time of its own: its share is its
-    // repetitions' time over the threads (for a single scene, its wall time below).
-    double rep_s = 0;
-    for (const auto& r : e.runs) rep_s += r.wall_s;
-    e.wall_s = rep_s / threads;
-  }
-  if (n_scenes == 1) out[0].wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  finish(scenes, members, jobs, finished, threads, out);
+  if (scenes.size() == 1) out[0].wall_s = seconds_since(wall0);
   return out;
 }
 
@@ -304,12 +343,10 @@ void to_json(nlohmann::json& j, const Statistic& s) {
 
 void to_json(nlohmann::json& j, const RunResult& r) {
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  j = {{"rep", r.rep},           {"slipped", r.slipped},     {"mu_s", num(r.mu_s)},
-       {"mu_s_signed", num(r.mu_s_signed)},
-       {"t_peak_s", r.t_peak_s}, {"t_slip_s", num(r.t_slip_s)}, {"max_mu", r.max_mu},
-       {"mu_d", num(r.mu_d)},    {"mu_d_signed", num(r.mu_d_signed)},
-       {"window_samples", r.window_samples}, {"steps", r.steps}, {"rhs_evals", r.rhs_evals},
-       {"switches", r.switches}, {"t_end_s", r.t_end_s},     {"wall_s", r.wall_s}};
+  j = {{"rep", r.rep},         {"slipped", r.slipped},     {"window_samples", r.window_samples},
+       {"steps", r.steps},     {"rhs_evals", r.rhs_evals}, {"switches", r.switches},
+       {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}};
+  for (const auto& o : observables()) j[o.name] = num(r.*o.value);
 }
 
 }  // namespace sb

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "springblock/observables.hpp"
 #include "springblock/observe/friction_observer.hpp"
 #include "springblock/scene.hpp"
 
@@ -17,8 +18,11 @@ namespace sb {
 struct RunResult {
   int rep = 0;
   bool slipped = false;  // a first macroscopic slip was found before the end of the run
-  double mu_s = 0, mu_s_signed = 0, t_peak_s = 0, t_slip_s = 0, max_mu = 0;
-  double mu_d = 0, mu_d_signed = 0;
+  // One value per observable of observables.hpp: mu_s, mu_s_signed, t_peak_s, t_slip_s, max_mu,
+  // mu_d, mu_d_signed.
+#define SB_VALUE(name, unit, extractor, summary) double name = 0;
+  SB_OBSERVABLES(SB_VALUE)
+#undef SB_VALUE
   std::int64_t window_samples = 0;
   std::int64_t steps = 0, rhs_evals = 0, switches = 0;
   double t_end_s = 0;
@@ -36,7 +40,10 @@ Statistic summarize(const std::vector<double>& values);
 
 struct EnsembleResult {
   std::vector<RunResult> runs;
-  Statistic mu_s, mu_s_signed, mu_d, mu_d_signed, t_peak_s;
+  // The statistic over the repetitions of each observable of observables.hpp.
+#define SB_STATISTIC(name, unit, extractor, summary) Statistic name;
+  SB_OBSERVABLES(SB_STATISTIC)
+#undef SB_STATISTIC
   double contact_fraction = 0;
   double wall_s = 0;
   int threads = 1;
@@ -47,6 +54,18 @@ struct EnsembleResult {
   // the other scene's) and work counters up to their own last sample.
   int trajectory_from = -1;
 };
+
+// The observables of observables.hpp as a table, for the code that treats them all alike: the
+// extraction from the observer, the statistics and the JSON.
+struct Observable {
+  const char* name;  // the JSON key
+  const char* unit;  // "" for a friction coefficient
+  double (FrictionObserver::*extract)() const;
+  Summary summary;
+  double RunResult::*value;
+  Statistic EnsembleResult::*statistic;
+};
+const std::vector<Observable>& observables();
 
 // Runs one repetition (used by the ensemble, the tests and the benchmarks).
 RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* interrupt = nullptr,
@@ -62,9 +81,10 @@ EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interru
 // is what run_ensemble would give it (same seeds, same order); its wall_s is its share, the sum
 // of its repetitions' wall times over the threads. `progress` gets the overall fraction,
 // each scene weighted by `weights` (default: reps x duration x N).
-// Scenes that differ only in extraction rules, run length or kept observables (and do not stop
-// at their first slip) share one simulation: the longest runs, the others observe it
-// (observe/fan_out.hpp) and name it in trajectory_from.
+// Scenes with equal trajectory specs (trajectory_spec.hpp: they differ only in extraction
+// rules, run length or kept observables, and do not stop at their first slip) share one
+// simulation: the longest runs, the others observe it (observe/fan_out.hpp) and name it in
+// trajectory_from.
 std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes,
                                           const std::atomic<bool>* interrupt = nullptr,
                                           std::function<void(double fraction, double elapsed_s)> progress = {},

@@ -84,40 +84,39 @@ nlohmann::json provenance(const std::string& command_line) {
           {"hardware_threads", std::thread::hardware_concurrency()}};
 }
 
+namespace {
+
+// An observable's statistic; one over no repetitions has null mean, std and sem, and says why.
+nlohmann::json statistic_json(const Scene& scene, const EnsembleResult& r, const Observable& o) {
+  nlohmann::json j = r.*o.statistic;
+  const char* quantity = o.summary == Summary::Loading ? "mu_s" : o.summary == Summary::Window ? "mu_d" : nullptr;
+  if (quantity)
+    if (const auto why = not_measured(scene, r, quantity); !why.empty()) j["not_measured"] = why;
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const std::string& command_line) {
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& run : r.runs) runs.push_back(run);
   std::int64_t steps = 0, rhs = 0;
   int slipped = 0;
   for (const auto& run : r.runs) steps += run.steps, rhs += run.rhs_evals, slipped += run.slipped;
-  // A statistic over no repetitions has null mean, std and sem, and says why.
-  auto stat = [&](const Statistic& st, const std::string& quantity) {
-    nlohmann::json j = st;
-    if (const auto why = not_measured(scene, r, quantity); !why.empty()) j["not_measured"] = why;
-    return j;
-  };
-  return {{"mu_s", stat(r.mu_s, "mu_s")},
-          {"mu_s_signed", stat(r.mu_s_signed, "mu_s")},
-          {"mu_d", stat(r.mu_d, "mu_d")},
-          {"mu_d_signed", stat(r.mu_d_signed, "mu_d")},
-          {"t_peak_s", r.t_peak_s},
-          {"reps", scene.reps},
-          {"reps_slipped", slipped},
-          {"seed", scene.seed},
-          {"contact_fraction", r.contact_fraction},
-          {"method", method_name(scene.run.method)},
-          {"dt", scene.run.dt_s},
-          {"tol", scene.run.tol},
-          {"modal_max_run", scene.run.modal_max_run},
-          {"modal_max_groove", scene.run.modal_max_groove},
-          {"duration", scene.duration()},
-          {"wall_seconds", r.wall_s},
-          {"threads", r.threads},
-          {"steps_total", steps},
-          {"rhs_evals_total", rhs},
-          {"scene", scene},
-          {"runs", runs},
-          {"provenance", provenance(command_line)}};
+  const nlohmann::json scene_json = scene;
+  nlohmann::json j = {{"reps_slipped", slipped},
+                      {"contact_fraction", r.contact_fraction},
+                      {"wall_seconds", r.wall_s},
+                      {"threads", r.threads},
+                      {"steps_total", steps},
+                      {"rhs_evals_total", rhs},
+                      {"scene", scene_json},
+                      {"runs", runs},
+                      {"provenance", provenance(command_line)}};
+  for (const auto& o : observables())
+    if (o.summary != Summary::None) j[o.name] = statistic_json(scene, r, o);
+  j.update(schema_entries(scene_json));
+  return j;
 }
 
 std::string series_tsv(const Scene& scene, const EnsembleResult& r, const std::string& command_line) {

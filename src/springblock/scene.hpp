@@ -44,15 +44,21 @@ struct Scene {
 // Throws InputError naming the field, the value and the allowed range.
 void validate(const Scene& s);
 
-// Build the chain of repetition `rep`: contact mask (random surfaces draw theirs from the
-// repetition's stream), micro coefficients drawn from the repetition's Gaussian stream.
+// Build the chain of repetition `rep` of a validated scene (its surface is not checked again):
+// contact mask (random surfaces draw theirs from the repetition's stream), micro coefficients
+// drawn from the repetition's Gaussian stream.
 Chain build_chain(const Scene& s, int rep);
 
 // Seed of repetition `rep` from the scene seed: a SplitMix64 hash, so streams of different
 // repetitions are independent and do not depend on which thread runs them.
 std::uint64_t rep_seed(std::uint64_t seed, int rep);
 
+// Scenes as JSON (scene_json.cpp, the one place a scene is written). to_json gives the scene
+// every results file and series header carries, with its derived parameters, t0 and duration.
 void to_json(nlohmann::json& j, const Scene& s);
+// The entries of the results schema that repeat a scene's (reps, seed, method, dt, tol,
+// modal_max_run, modal_max_groove, duration), taken from its JSON `scene` under the schema's names.
+nlohmann::json schema_entries(const nlohmann::json& scene);
 // Overlay the keys present in `j` onto `s` (scene files). Unknown keys are an InputError.
 void apply_scene_json(Scene& s, const nlohmann::json& j);
 

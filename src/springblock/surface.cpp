@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <string_view>
 #include <system_error>
 
@@ -28,6 +29,8 @@ constexpr std::size_t kMaxLevels = 8;
 // For errors where the spec is well formed but unusable with this chain; repeating the
 // grammar there would suggest a syntax problem that does not exist.
 [[noreturn]] void fail_plain(const std::string& what) { throw InputError("pattern", what); }
+
+constexpr const char* kNoContact = "no block is left in contact; the surface cannot carry the load";
 
 std::vector<std::string_view> split(std::string_view s, char sep) {
   std::vector<std::string_view> out;
@@ -111,9 +114,9 @@ Layout layout_at(const PatternSpec& spec, std::size_t level) {
   return spec.layout.empty() ? Layout::PawlFirst : spec.layout[std::min(level, spec.layout.size() - 1)];
 }
 
-void validate(const PatternSpec& spec) {
-  // build_contact_mask is also callable with a hand-made spec, so re-check what parse_pattern
-  // guarantees: a zero size would make the period arithmetic divide by zero.
+void check_spec(const PatternSpec& spec) {
+  // A scene's spec may be hand-made, not parsed, so re-check what parse_pattern guarantees: a
+  // zero size would make the period arithmetic divide by zero.
   switch (spec.kind) {
     case SurfaceKind::Smooth: return;
     case SurfaceKind::Periodic:
@@ -134,6 +137,63 @@ void validate(const PatternSpec& spec) {
       return;
   }
   fail("unknown surface kind");
+}
+
+// Every size of the pattern must fit on the chain; a larger one is a typo or a wrong N.
+void check_sizes_fit(const PatternSpec& spec, int N) {
+  std::vector<int> sizes;
+  if (spec.kind == SurfaceKind::Periodic) sizes = {spec.n_p, spec.n_g};
+  if (spec.kind == SurfaceKind::Hierarchical) sizes = spec.levels;
+  for (int size : sizes)
+    if (size > N)
+      fail_plain("size " + std::to_string(size) + " in '" + spec.text() + "' exceeds the number of blocks N=" +
+                 std::to_string(N) + "; allowed sizes are [1, " + std::to_string(N) + "]");
+}
+
+std::string printed(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
+// Level 1 alternates over the whole chain; each finer level subdivides every maximal pawl run
+// the levels above left. Grooves are never touched again: a finer level only removes contact.
+void lay_hierarchy(std::vector<std::uint8_t>& mask, const PatternSpec& spec) {
+  const int N = static_cast<int>(mask.size());
+  alternate(mask, 0, N, spec.levels[0], spec.levels[0], layout_at(spec, 0));
+  for (std::size_t k = 1; k < spec.levels.size(); ++k) {
+    const int g = spec.levels[k];
+    int i = 0;
+    while (i < N) {
+      if (!mask[i]) {
+        ++i;
+        continue;
+      }
+      int j = i;
+      while (j < N && mask[j]) ++j;
+      alternate(mask, i, j, g, g, layout_at(spec, k));
+      i = j;
+    }
+  }
+}
+
+long long random_groove_count(const PatternSpec& spec, int N) {
+  // std::llround rounds halves away from zero, independent of the FP rounding mode.
+  return std::llround(spec.groove_fraction * static_cast<double>(N));
+}
+
+// `grooves` blocks drawn without replacement from `seed`. Partial Fisher-Yates: after step i the
+// prefix idx[0..i] is a uniform sample without replacement, so only `grooves` draws are needed.
+void draw_grooves(std::vector<std::uint8_t>& mask, long long grooves, std::uint64_t seed) {
+  const int N = static_cast<int>(mask.size());
+  std::vector<int> idx(static_cast<std::size_t>(N));
+  for (int i = 0; i < N; ++i) idx[i] = i;
+  std::mt19937_64 rng(seed);
+  for (long long i = 0; i < grooves && i < N; ++i) {
+    const auto j = i + static_cast<long long>(bounded_draw(rng, static_cast<std::uint64_t>(N - i)));
+    std::swap(idx[i], idx[j]);
+    mask[idx[i]] = 0;
+  }
 }
 
 }  // namespace
@@ -256,65 +316,40 @@ PatternSpec parse_pattern(const std::string& spec) {
   fail("unknown pattern kind '" + std::string(kind) + "' in '" + spec + "'");
 }
 
-std::vector<std::uint8_t> build_contact_mask(const PatternSpec& spec, int N, std::uint64_t seed) {
-  if (N < 1) fail_plain("the chain needs at least one block, got N=" + std::to_string(N));
-  validate(spec);
-  std::vector<std::uint8_t> mask(static_cast<std::size_t>(N), 1);
-  const auto too_big = [&](int size) {
-    fail_plain("size " + std::to_string(size) + " in '" + spec.text() +
-               "' exceeds the number of blocks N=" + std::to_string(N));
-  };
+void validate_surface(const PatternSpec& spec, int N) {
+  if (N < 1) fail_plain("the chain needs at least one block, got N=" + std::to_string(N) + " (allowed N >= 1)");
+  check_spec(spec);
+  check_sizes_fit(spec, N);
+  if (spec.kind == SurfaceKind::Random) {
+    // The groove count is fixed by the fraction (only which blocks is drawn), so one check holds
+    // for every repetition's draw.
+    if (random_groove_count(spec, N) >= N)
+      fail_plain(std::string(kNoContact) + ": " + spec.text() + " on N = " + std::to_string(N) +
+                 " leaves no block in contact (allowed groove fractions [0, " +
+                 printed((N - 0.5) / N) + "))");
+    return;
+  }
+  // Pattern and layout alone decide a deterministic mask: building it once shows whether a layout
+  // that starts with a groove leaves a short chain without contact.
+  const auto mask = contact_mask(spec, N, 0);
+  if (std::find(mask.begin(), mask.end(), std::uint8_t{1}) == mask.end())
+    fail_plain(std::string(kNoContact) + " ('" + spec.text() + "' laid out " + spec.layout_text() +
+               " on N = " + std::to_string(N) + ")");
+}
 
+std::vector<std::uint8_t> build_contact_mask(const PatternSpec& spec, int N, std::uint64_t seed) {
+  validate_surface(spec, N);
+  return contact_mask(spec, N, seed);
+}
+
+std::vector<std::uint8_t> contact_mask(const PatternSpec& spec, int N, std::uint64_t seed) {
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(N), 1);
   switch (spec.kind) {
     case SurfaceKind::Smooth: break;
-    case SurfaceKind::Periodic:
-      if (spec.n_p > N) too_big(spec.n_p);
-      if (spec.n_g > N) too_big(spec.n_g);
-      alternate(mask, 0, N, spec.n_p, spec.n_g, layout_at(spec, 0));
-      break;
-    case SurfaceKind::Hierarchical: {
-      for (int g : spec.levels)
-        if (g > N) too_big(g);
-      alternate(mask, 0, N, spec.levels[0], spec.levels[0], layout_at(spec, 0));
-      for (std::size_t k = 1; k < spec.levels.size(); ++k) {
-        const int g = spec.levels[k];
-        // Find each maximal pawl run left by the previous levels and subdivide it in place.
-        // Grooves are never touched again: a finer level only removes contact, never adds it.
-        int i = 0;
-        while (i < N) {
-          if (!mask[i]) {
-            ++i;
-            continue;
-          }
-          int j = i;
-          while (j < N && mask[j]) ++j;
-          alternate(mask, i, j, g, g, layout_at(spec, k));
-          i = j;
-        }
-      }
-      break;
-    }
-    case SurfaceKind::Random: {
-      // std::llround rounds halves away from zero, independent of the FP rounding mode.
-      const long long grooves = std::llround(spec.groove_fraction * static_cast<double>(N));
-      std::vector<int> idx(static_cast<std::size_t>(N));
-      for (int i = 0; i < N; ++i) idx[i] = i;
-      std::mt19937_64 rng(seed);
-      // Partial Fisher-Yates: after step i the prefix idx[0..i] is a uniform sample without
-      // replacement, so only `grooves` draws are needed.
-      for (long long i = 0; i < grooves && i < N; ++i) {
-        const auto j = i + static_cast<long long>(
-                               bounded_draw(rng, static_cast<std::uint64_t>(N - i)));
-        std::swap(idx[i], idx[j]);
-        mask[idx[i]] = 0;
-      }
-      break;
-    }
+    case SurfaceKind::Periodic: alternate(mask, 0, N, spec.n_p, spec.n_g, layout_at(spec, 0)); break;
+    case SurfaceKind::Hierarchical: lay_hierarchy(mask, spec); break;
+    case SurfaceKind::Random: draw_grooves(mask, random_groove_count(spec, N), seed); break;
   }
-
-  bool any = false;
-  for (auto m : mask) any = any || m;
-  if (!any) fail_plain("no block is left in contact; the surface cannot carry the load");
   return mask;
 }
 

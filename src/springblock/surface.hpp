@@ -45,10 +45,20 @@ PatternSpec parse_pattern(const std::string& spec);
 // Throws InputError(field="layout").
 std::vector<Layout> parse_layout(const std::string& text);
 
+// Whether `spec` can be laid on a chain of N blocks. Throws InputError(field="pattern") naming the
+// allowed range: N >= 1, sizes in [1, N] (and at most 1000000), 1 to 8 hierarchical levels, a
+// groove fraction in [0, 1) that leaves a block in contact, and a layout that leaves one too.
+// A scene's surface is checked here once, when the scene is validated (validate(Scene)).
+void validate_surface(const PatternSpec& spec, int N);
+
 // 1 = in contact, 0 = groove. Deterministic for all kinds except Random, which draws
-// round(fraction*N) groove blocks without replacement from `seed`.
-// Throws InputError(field="pattern") if a size exceeds N or no block is left in contact.
+// round(fraction*N) groove blocks without replacement from `seed`. Checks `spec` first
+// (validate_surface): for callers that hold a pattern but no validated scene.
 std::vector<std::uint8_t> build_contact_mask(const PatternSpec& spec, int N, std::uint64_t seed = 0);
+
+// The same mask without the checks, for a spec validate_surface accepted on this N: what every
+// repetition of a validated scene builds its chain with.
+std::vector<std::uint8_t> contact_mask(const PatternSpec& spec, int N, std::uint64_t seed);
 
 // Fraction of blocks in contact, S/S_tot.
 double contact_fraction(const std::vector<std::uint8_t>& mask);

@@ -1,0 +1,65 @@
+// The one place a scene is written: the JSON every results file and series header carries, and
+// the entries the results schema repeats from it. Scene files are read back here too.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "springblock/errors.hpp"
+#include "springblock/scene.hpp"
+#include "springblock/scene_fields.hpp"
+
+namespace sb {
+
+void to_json(nlohmann::json& j, const Scene& s) {
+  j = nlohmann::json{{"material", s.material},
+                     {"geometry", s.geometry},
+                     {"friction", s.friction},
+                     {"k_int_scale", s.k_int_scale},
+                     {"pattern", s.pattern.text()},
+                     {"layout", s.pattern.layout_text()},
+                     {"derived", s.derived()},
+                     {"method", method_name(s.run.method)},
+                     {"dt_s", s.run.dt_s},
+                     {"tol", s.run.tol},
+                     {"modal_max_run", s.run.modal_max_run},
+                     {"modal_max_groove", s.run.modal_max_groove},
+                     {"duration_s", s.duration()},
+                     {"t0_s", s.t0_s()},
+                     {"sample_dt_s", s.run.sample_dt_s},
+                     {"stop_after_mu_s", s.run.stop_after_mu_s},
+                     {"peak_rule", s.rules.peak_rule == ExtractionRules::PeakRule::AllSlipped ? "all_slipped" : "drop"},
+                     {"peak_drop", s.rules.peak_drop},
+                     {"mu_d_skip_t0", s.rules.mu_d_skip_t0},
+                     {"reps", s.reps},
+                     {"seed", s.seed}};
+}
+
+nlohmann::json schema_entries(const nlohmann::json& scene) {
+  // The results schema's own names for these (dt, duration) are older than the scene's.
+  return {{"reps", scene.at("reps")},
+          {"seed", scene.at("seed")},
+          {"method", scene.at("method")},
+          {"dt", scene.at("dt_s")},
+          {"tol", scene.at("tol")},
+          {"modal_max_run", scene.at("modal_max_run")},
+          {"modal_max_groove", scene.at("modal_max_groove")},
+          {"duration", scene.at("duration_s")}};
+}
+
+void apply_scene_json(Scene& s, const nlohmann::json& j) {
+  if (!j.is_object()) throw InputError("scene", "a scene file must hold one JSON object");
+  for (auto& [key, value] : j.items()) {
+    std::string text;
+    if (value.is_string()) text = value.get<std::string>();
+    else if (value.is_number_integer()) text = std::to_string(value.get<long long>());
+    else if (value.is_number()) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.17g", value.get<double>());
+      text = buf;
+    } else if (value.is_boolean()) text = value.get<bool>() ? "true" : "false";
+    else throw InputError(key, "must be a string, number or boolean");
+    set_scene_field(s, key, text);
+  }
+}
+
+}  // namespace sb
