@@ -24,6 +24,7 @@ ModalRuns::ModalRuns(const Chain& c)
       // sqrt((K_s + 4 K_int) / m), so the per-mode transitions are computed once per basis.
       H_(EdgeMarch::grid_step(std::sqrt((c.K_s + 4.0 * c.K_int) / c.m))),
       modes_(c),
+      shapes_(c),
       run_of_(c.N, -1),
       A_(c.N),
       B_(c.N),
@@ -49,24 +50,10 @@ const ModalRuns::Basis& ModalRuns::basis(const Chain& c, int n, bool left, bool 
   if (it != bases_.end()) return it->second;
   Basis b;
   b.run = &modes_.get(n, left, right);
-  const Eigen::MatrixXd& Q = b.run->Q;
-  const Eigen::VectorXd& lambda = b.run->lambda;
   for (int k = 0; k < n; ++k) b.grid.push_back(b.run->modes[k].transition(H_));
-  // K^-1 x = Q diag(1/lambda) Q^T x for the pieces of the particular solution that depend only
-  // on the run's shape: B from the slider, a0 from the damping of B, gL / gR per unit position
-  // of the stuck neighbour on either side.
-  auto solve = [&](const Eigen::VectorXd& x) {
-    const Eigen::VectorXd y = Q * (Q.transpose() * x).cwiseQuotient(lambda);
-    return std::vector<double>(y.data(), y.data() + n);
-  };
-  b.B = solve(Eigen::VectorXd::Constant(n, c.K_s * c.v_slider));
-  b.a0 = solve(-c.m * c.gamma * Eigen::Map<const Eigen::VectorXd>(b.B.data(), n));
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
-  e[0] = left ? K_int_ : 0.0;
-  b.gL = solve(e);
-  e.setZero();
-  e[n - 1] = right ? K_int_ : 0.0;
-  b.gR = solve(e);
+  // The affine path's pieces of this shape (affine_paths.hpp): the same particular solution as
+  // every other run's.
+  b.path = &shapes_.get(n, left, right);
   return bases_.emplace(key, std::move(b)).first->second;
 }
 
@@ -95,8 +82,8 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
   Eigen::VectorXd fk_modal;
   if (friction) fk_modal = Q.transpose() * Eigen::Map<const Eigen::VectorXd>(rhs_.data(), n);
   for (int r = 0; r < n; ++r) {
-    B_[lo + r] = b.B[r];
-    A_[lo + r] = b.a0[r] + uL * b.gL[r] + uR * b.gR[r];
+    B_[lo + r] = b.path->B[r];
+    A_[lo + r] = b.path->a0[r] + uL * b.path->gL[r] + uR * b.path->gR[r];
   }
   if (friction) {
     for (int k = 0; k < n; ++k) fk_modal[k] /= b.run->modes[k].omega2 * c.m;

@@ -27,6 +27,7 @@
 
 #include <Eigen/Dense>
 
+#include "springblock/integrate/linear/affine_paths.hpp"
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/linear/run_basis.hpp"
@@ -96,7 +97,7 @@ class ModalRuns {
   struct Basis {
     const RunBasis* run;             // the run shape's modes (shared cache)
     std::vector<Transition> grid;    // per mode: transition over the march grid
-    std::vector<double> B, a0, gL, gR;  // particular solution pieces (see add())
+    const AffineShapes::Shape* path;  // the affine path's pieces (see add())
   };
   struct Run {
     int lo, hi;
@@ -121,6 +122,7 @@ class ModalRuns {
   double K_int_, eps_v_, H_, sample_dt_ = 0;
   double eps_u_ = 0, eps_v_settle_ = 0;  // settle scales (set_settle_scales)
   RunBases modes_;
+  AffineShapes shapes_;
   std::map<std::tuple<int, bool, bool>, Basis> bases_;
   std::vector<Run> runs_;
   std::vector<int> run_of_;                  // block -> index in runs_ (-1: not in a modal run)

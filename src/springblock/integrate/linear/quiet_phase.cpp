@@ -18,7 +18,7 @@ double affine_crossing(double a, double b, double f) {
 
 }  // namespace
 
-QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
+QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c), shapes_(c) {
   const int N = c.N;
   int offset = 0;
   for (int i = 0; i < N;) {
@@ -38,8 +38,6 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
   B_.resize(offset);
   q0_.resize(offset);
   p0_.resize(offset);
-  rhs_.resize(offset);
-  work_.resize(offset);
 
   // Groove index -> segment, to find the segments each contact block borders.
   std::vector<int> seg_of(N, -1);
@@ -80,34 +78,19 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
 // A, B of segment s from the stuck neighbours' positions in u, and the modal coordinates of the
 // deviation from them at t0.
 void QuietPhase::project(const Chain& c, const GrooveRun& s, const double* u, const double* v) {
-  const double t0 = t0_, mg = c.m * c.gamma;
+  const double t0 = t0_;
   const RunBasis& d = *s.basis;
   double* A = A_.data() + s.offset;
   double* B = B_.data() + s.offset;
   double* q0 = q0_.data() + s.offset;
   double* p0 = p0_.data() + s.offset;
-  double* w = work_.data() + s.offset;
-  // K_seg^{-1} x = Q diag(1/lambda) Q^T x; B from the slider load, then A from the stuck
-  // neighbours' springs minus the damping force of the drift velocity B.
-  auto solve = [&](const double* x, double* out) {
-    for (int k = 0; k < s.n; ++k) {
-      double dot = 0;
-      for (int r = 0; r < s.n; ++r) dot += d.Q(r, k) * x[r];
-      w[k] = dot / d.lambda[k];
-    }
-    for (int r = 0; r < s.n; ++r) {
-      double sum = 0;
-      for (int k = 0; k < s.n; ++k) sum += d.Q(r, k) * w[k];
-      out[r] = sum;
-    }
-  };
-  double* x = rhs_.data() + s.offset;
-  for (int r = 0; r < s.n; ++r) x[r] = c.K_s * c.v_slider;
-  solve(x, B);
-  for (int r = 0; r < s.n; ++r) x[r] = -mg * B[r];
-  if (s.left_stuck) x[0] += c.K_int * u[s.first - 1];
-  if (s.right_stuck) x[s.n - 1] += c.K_int * u[s.first + s.n];
-  solve(x, A);
+  // The affine path from the stuck neighbours' positions (affine_paths.hpp).
+  const AffineShapes::Shape& path = shapes_.get(s.n, s.left_stuck, s.right_stuck);
+  const double uL = s.left_stuck ? u[s.first - 1] : 0.0, uR = s.right_stuck ? u[s.first + s.n] : 0.0;
+  for (int r = 0; r < s.n; ++r) {
+    B[r] = path.B[r];
+    A[r] = path.a0[r] + uL * path.gL[r] + uR * path.gR[r];
+  }
   for (int k = 0; k < s.n; ++k) {
     double qk = 0, pk = 0;
     for (int r = 0; r < s.n; ++r) {
