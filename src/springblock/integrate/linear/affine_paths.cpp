@@ -49,7 +49,7 @@ const AffineShapes::Shape& AffineShapes::get(int n, bool left, bool right) {
   return shapes_.emplace(key, std::move(sh)).first->second;
 }
 
-void AffinePaths::compute(const Chain& c, const State& s, BlockRange r) {
+void AffinePaths::compute(const State& s, BlockRange r) {
   const int n = r.hi - r.lo;
   const bool left = r.lo > 0, right = r.hi < N_;  // held by a stuck block there (else a free end)
   const AffineShapes::Shape& sh = shapes_.get(n, left, right);

@@ -41,7 +41,7 @@ class AffinePaths {
   explicit AffinePaths(const Chain& c);
 
   // A, B of the grooves of run r from the positions of the stuck blocks beside it in s.
-  void compute(const Chain& c, const State& s, BlockRange r);
+  void compute(const State& s, BlockRange r);
   // The path of block i (valid for the blocks of the last run computed that holds it).
   double u(int i, double t) const { return A_[i] + B_[i] * t; }
   double drift(int i) const { return B_[i]; }

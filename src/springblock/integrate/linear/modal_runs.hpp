@@ -53,8 +53,8 @@ class ModalRuns {
   // Transients below these (in u and v, every row) count as gone: see settled_after().
   void set_settle_scales(double eps_u, double eps_v) { eps_u_ = eps_u, eps_v_settle_ = eps_v; }
   // For the run holding block i: a time after which its deviation from the affine path is
-  // below the settle scales in every row (from each mode's exponential envelope at projection;
-  // +inf without damping or with a mode not clearly underdamped, where no bound is taken).
+  // below the settle scales in every row (envelope.hpp, from its modes at projection;
+  // +inf without damping or with a mode not underdamped, where no bound is taken).
   // Lets the active set settle a kept groove run without evaluating it.
   double settled_after(int i) const { return runs_[run_of_[i]].settled_after; }
   // True if a modal run spans exactly [lo, hi).
@@ -113,8 +113,7 @@ class ModalRuns {
   // Rows of run r from modal coordinates q, qd at time t into u, v (rows [r0, r1) stepping by dr).
   void rows(const Run& r, double t, const double* q, const double* qd, int r0, int r1, int dr, double* u,
             double* v) const;
-  double envelope_time(const Run& r) const;
-  const Basis& basis(const Chain& c, int n, bool left, bool right);
+  const Basis& basis(int n, bool left, bool right);
   // Modal coordinates of run r at time t into q, qd (per mode, indices lo.. of the flat arrays).
   void coords(const Run& r, double t, double* q, double* qd) const;
 

@@ -1,4 +1,5 @@
 #include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/linear/envelope.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -77,7 +78,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c), shapes_(c) 
 
 // A, B of segment s from the stuck neighbours' positions in u, and the modal coordinates of the
 // deviation from them at t0.
-void QuietPhase::project(const Chain& c, const GrooveRun& s, const double* u, const double* v) {
+void QuietPhase::project(const GrooveRun& s, const double* u, const double* v) {
   const double t0 = t0_;
   const RunBasis& d = *s.basis;
   double* A = A_.data() + s.offset;
@@ -106,43 +107,25 @@ void QuietPhase::project(const Chain& c, const GrooveRun& s, const double* u, co
 // Underdamped modes shrink at least like e^{-alpha tau} (amplitude and velocity amplitude); once
 // below 1e-17 of the segment's u and v scales they no longer change a double (dead_tau), and
 // below the sample scales they are dropped from samples (sample_dead_tau).
-void QuietPhase::set_dead_times(const Chain& c, GrooveRun& s) const {
-  const RunBasis& d = *s.basis;
-  const double t0 = t0_;
+void QuietPhase::set_dead_times(GrooveRun& s) const {
   const double* A = A_.data() + s.offset;
   const double* B = B_.data() + s.offset;
-  const double* q0 = q0_.data() + s.offset;
-  const double* p0 = p0_.data() + s.offset;
-  double amp = 0, vamp = 0, uscale = 0, vscale = 0, alpha = 0.5 * c.gamma;
-  bool decays = alpha > 0;
-  for (int k = 0; k < s.n; ++k) {
-    const double s2 = d.modes[k].omega2 - alpha * alpha;
-    if (s2 <= 0) decays = false;
-    const double wd = std::sqrt(std::max(s2, 0.0));
-    const double a_k = decays ? std::hypot(q0[k], (p0[k] + alpha * q0[k]) / wd) : 0.0;
-    amp += a_k;
-    vamp += a_k * std::sqrt(d.modes[k].omega2);
-  }
+  double uscale = 0, vscale = 0;
   for (int r = 0; r < s.n; ++r) {
-    uscale = std::max(uscale, std::fabs(A[r] + B[r] * t0));
+    uscale = std::max(uscale, std::fabs(A[r] + B[r] * t0_));
     vscale = std::max(vscale, std::fabs(B[r]));
   }
-  s.dead_tau = std::numeric_limits<double>::infinity();
-  if (decays && uscale > 0 && vscale > 0)
-    s.dead_tau = std::max({0.0, std::log(amp / (1e-17 * uscale)) / alpha, std::log(vamp / (1e-17 * vscale)) / alpha});
-  // The bound on every row is amp e^{-alpha tau}, on every velocity vamp e^{-alpha tau}.
-  s.sample_dead_tau = s.dead_tau;
-  if (decays && sample_eps_u_ > 0 && sample_eps_v_ > 0)
-    s.sample_dead_tau = std::min(s.dead_tau, std::max({0.0, std::log(amp / sample_eps_u_) / alpha,
-                                                       std::log(vamp / sample_eps_v_) / alpha}));
+  const TransientEnvelope env = transient_envelope(*s.basis, q0_.data() + s.offset, p0_.data() + s.offset);
+  s.dead_tau = env.time_below(1e-17 * uscale, 1e-17 * vscale);
+  s.sample_dead_tau = std::min(s.dead_tau, env.time_below(sample_eps_u_, sample_eps_v_));
 }
 
 void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
   t0_ = t0;
   sample_valid_ = false;
   for (GrooveRun& s : segs_) {
-    project(c, s, u, v);
-    set_dead_times(c, s);
+    project(s, u, v);
+    set_dead_times(s);
   }
   for (std::size_t k = 0; k < affine_blocks_.size(); ++k)
     affine_a_[k] = c.driving_force(affine_blocks_[k], u, v, t0);

@@ -98,8 +98,8 @@ class QuietPhase {
 
   // begin()'s work per segment: the particular solution and the modal coordinates of the
   // deviation from it; the times after which the modes no longer count.
-  void project(const Chain& c, const GrooveRun& s, const double* u, const double* v);
-  void set_dead_times(const Chain& c, GrooveRun& s) const;
+  void project(const GrooveRun& s, const double* u, const double* v);
+  void set_dead_times(GrooveRun& s) const;
   // u, v of segment s at absolute time t from its modal coordinates q, qd.
   void to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
                    double* v) const;
