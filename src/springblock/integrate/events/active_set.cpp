@@ -126,7 +126,7 @@ void ActiveSet::classify_runs(const Chain& c, const State& s, const std::uint8_t
       }
       // Was stepped, or modal and touched (ringing, or part of an active run), or never
       // classified: new A, B.
-      paths_.compute(c, s, r.span);
+      paths_.compute(s, r.span);
       if (settled_now(s, r.span)) {
         r.kind = kSettled;
         continue;

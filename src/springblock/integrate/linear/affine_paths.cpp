@@ -26,33 +26,33 @@ void solve_tridiag(std::vector<double>& diag, std::vector<double>& off, std::vec
 
 }  // namespace
 
-AffinePaths::AffinePaths(const Chain& c)
-    : N_(c.N), K_int_(c.K_int), A_(c.N, 0.0), B_(c.N, 0.0), diag_(c.N), off_(c.N), rhs_(c.N) {}
+AffinePaths::AffinePaths(const Chain& c) : N_(c.N), shapes_(c), A_(c.N, 0.0), B_(c.N, 0.0) {}
 
-const AffinePaths::Shape& AffinePaths::shape(const Chain& c, int n, bool left, bool right) {
+const AffineShapes::Shape& AffineShapes::get(int n, bool left, bool right) {
   const auto key = std::make_tuple(n, left, right);
   auto it = shapes_.find(key);
   if (it != shapes_.end()) return it->second;
+  diag_.resize(n), off_.resize(n), rhs_.resize(n);
   Shape sh{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
   auto solve = [&](auto&& rhs, std::vector<double>& x) {
     for (int k = 0; k < n; ++k) {
-      diag_[k] = run_stiffness_diagonal(c.K_s, K_int_, n, k, left, right);
+      diag_[k] = run_stiffness_diagonal(K_s_, K_int_, n, k, left, right);
       off_[k] = -K_int_;
       rhs_[k] = rhs(k);
     }
     solve_tridiag(diag_, off_, rhs_, x.data(), n);
   };
-  solve([&](int) { return c.K_s * c.v_slider; }, sh.B);
-  solve([&](int k) { return -c.m * c.gamma * sh.B[k]; }, sh.a0);
+  solve([&](int) { return K_s_ * v_; }, sh.B);
+  solve([&](int k) { return -m_gamma_ * sh.B[k]; }, sh.a0);
   solve([&](int k) { return k == 0 && left ? K_int_ : 0.0; }, sh.gL);
   solve([&](int k) { return k == n - 1 && right ? K_int_ : 0.0; }, sh.gR);
   return shapes_.emplace(key, std::move(sh)).first->second;
 }
 
-void AffinePaths::compute(const Chain& c, const State& s, BlockRange r) {
+void AffinePaths::compute(const State& s, BlockRange r) {
   const int n = r.hi - r.lo;
   const bool left = r.lo > 0, right = r.hi < N_;  // held by a stuck block there (else a free end)
-  const Shape& sh = shape(c, n, left, right);
+  const AffineShapes::Shape& sh = shapes_.get(n, left, right);
   const double uL = left ? s.u[r.lo - 1] : 0.0, uR = right ? s.u[r.hi] : 0.0;
   for (int k = 0; k < n; ++k) {
     B_[r.lo + k] = sh.B[k];

@@ -17,12 +17,31 @@
 
 namespace sb::event_detail {
 
+// The pieces of the affine path per run shape, cached: the one place the particular solution is
+// computed, for settled grooves (AffinePaths), the quiet phase's groove runs and the modal runs
+// (which subtract their sliding blocks' kinetic friction on top).
+class AffineShapes {
+ public:
+  struct Shape {
+    std::vector<double> B, a0, gL, gR;  // A = a0 + u_left gL + u_right gR
+  };
+  explicit AffineShapes(const Chain& c) : K_s_(c.K_s), K_int_(c.K_int), m_gamma_(c.m * c.gamma), v_(c.v_slider) {}
+  // The run of n blocks, held at its left / right end by a stuck block or not (a free end).
+  // References stay valid for the life of this object.
+  const Shape& get(int n, bool left, bool right);
+
+ private:
+  double K_s_, K_int_, m_gamma_, v_;
+  std::map<std::tuple<int, bool, bool>, Shape> shapes_;
+  std::vector<double> diag_, off_, rhs_;  // tridiagonal work arrays
+};
+
 class AffinePaths {
  public:
   explicit AffinePaths(const Chain& c);
 
   // A, B of the grooves of run r from the positions of the stuck blocks beside it in s.
-  void compute(const Chain& c, const State& s, BlockRange r);
+  void compute(const State& s, BlockRange r);
   // The path of block i (valid for the blocks of the last run computed that holds it).
   double u(int i, double t) const { return A_[i] + B_[i] * t; }
   double drift(int i) const { return B_[i]; }
@@ -32,16 +51,9 @@ class AffinePaths {
   void write(BlockRange r, double t, double* u, double* v) const;
 
  private:
-  struct Shape {
-    std::vector<double> B, a0, gL, gR;
-  };
-  const Shape& shape(const Chain& c, int n, bool left, bool right);
-
   int N_;
-  double K_int_;
-  std::map<std::tuple<int, bool, bool>, Shape> shapes_;
-  std::vector<double> A_, B_;             // per block
-  std::vector<double> diag_, off_, rhs_;  // tridiagonal work arrays
+  AffineShapes shapes_;
+  std::vector<double> A_, B_;  // per block
 };
 
 }  // namespace sb::event_detail

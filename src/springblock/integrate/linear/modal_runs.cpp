@@ -1,4 +1,5 @@
 #include "springblock/integrate/linear/modal_runs.hpp"
+#include "springblock/integrate/linear/envelope.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +25,7 @@ ModalRuns::ModalRuns(const Chain& c)
       // sqrt((K_s + 4 K_int) / m), so the per-mode transitions are computed once per basis.
       H_(EdgeMarch::grid_step(std::sqrt((c.K_s + 4.0 * c.K_int) / c.m))),
       modes_(c),
+      shapes_(c),
       run_of_(c.N, -1),
       A_(c.N),
       B_(c.N),
@@ -43,30 +45,16 @@ void ModalRuns::set_sample_dt(double dt) {
   modes_.set_sample_dt(dt);
 }
 
-const ModalRuns::Basis& ModalRuns::basis(const Chain& c, int n, bool left, bool right) {
+const ModalRuns::Basis& ModalRuns::basis(int n, bool left, bool right) {
   const auto key = std::make_tuple(n, left, right);
   auto it = bases_.find(key);
   if (it != bases_.end()) return it->second;
   Basis b;
   b.run = &modes_.get(n, left, right);
-  const Eigen::MatrixXd& Q = b.run->Q;
-  const Eigen::VectorXd& lambda = b.run->lambda;
   for (int k = 0; k < n; ++k) b.grid.push_back(b.run->modes[k].transition(H_));
-  // K^-1 x = Q diag(1/lambda) Q^T x for the pieces of the particular solution that depend only
-  // on the run's shape: B from the slider, a0 from the damping of B, gL / gR per unit position
-  // of the stuck neighbour on either side.
-  auto solve = [&](const Eigen::VectorXd& x) {
-    const Eigen::VectorXd y = Q * (Q.transpose() * x).cwiseQuotient(lambda);
-    return std::vector<double>(y.data(), y.data() + n);
-  };
-  b.B = solve(Eigen::VectorXd::Constant(n, c.K_s * c.v_slider));
-  b.a0 = solve(-c.m * c.gamma * Eigen::Map<const Eigen::VectorXd>(b.B.data(), n));
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
-  e[0] = left ? K_int_ : 0.0;
-  b.gL = solve(e);
-  e.setZero();
-  e[n - 1] = right ? K_int_ : 0.0;
-  b.gR = solve(e);
+  // The affine path's pieces of this shape (affine_paths.hpp): the same particular solution as
+  // every other run's.
+  b.path = &shapes_.get(n, left, right);
   return bases_.emplace(key, std::move(b)).first->second;
 }
 
@@ -83,7 +71,7 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
   ++projections;
   const int n = hi - lo;
   const bool left = lo > 0, right = hi < N_;
-  const Basis& b = basis(c, n, left, right);
+  const Basis& b = basis(n, left, right);
   const double uL = left ? s.u[lo - 1] : 0.0, uR = right ? s.u[hi] : 0.0;
   // Kinetic friction enters as a constant force: A gains -K^-1 f_kin (zero for grooves only).
   bool friction = false;
@@ -95,8 +83,8 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
   Eigen::VectorXd fk_modal;
   if (friction) fk_modal = Q.transpose() * Eigen::Map<const Eigen::VectorXd>(rhs_.data(), n);
   for (int r = 0; r < n; ++r) {
-    B_[lo + r] = b.B[r];
-    A_[lo + r] = b.a0[r] + uL * b.gL[r] + uR * b.gR[r];
+    B_[lo + r] = b.path->B[r];
+    A_[lo + r] = b.path->a0[r] + uL * b.path->gL[r] + uR * b.path->gR[r];
   }
   if (friction) {
     for (int k = 0; k < n; ++k) fk_modal[k] /= b.run->modes[k].omega2 * c.m;
@@ -116,7 +104,7 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     acc0_[lo + k] = -c.gamma * pk - b.run->modes[k].omega2 * qk;
   }
   Run run{lo, hi, &b, s.t, s.t, 0, false, true, grooves};
-  if (grooves) run.settled_after = s.t + envelope_time(run);
+  if (grooves) run.settled_after = s.t + transient_envelope(*b.run, q0_.data() + lo, p0_.data() + lo).time_below(eps_u_, eps_v_settle_);
   if (old >= 0 && runs_[old].lo == lo && !runs_[old].live) {
     // Reuse the slot of the old run that started here; its blocks are re-marked by end().
     for (int i = runs_[old].lo; i < runs_[old].hi; ++i) run_of_[i] = -1;
@@ -125,27 +113,6 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     runs_.push_back(run);
   }
   return true;
-}
-
-double ModalRuns::envelope_time(const Run& r) const {
-  // Mode k: q = e^{-alpha tau} (q0 cos w tau + (P / w) sin w tau), P = p0 + alpha q0, so
-  // |q| <= e^{-alpha tau} Cq with Cq = hypot(q0, P / w), and q' = -alpha q + e^{-alpha tau}
-  // (P cos - (w^2 q0 / w) sin) gives |q'| <= e^{-alpha tau} (alpha Cq + hypot(P, w q0)). Rows mix
-  // modes with |Q| <= 1, so the sums over modes bound every row. All modes share alpha.
-  if (!(eps_u_ > 0) || !(eps_v_settle_ > 0)) return std::numeric_limits<double>::infinity();
-  double su = 0, sv = 0, alpha = 0;
-  for (int k = 0; k < r.hi - r.lo; ++k) {
-    const DampedMode& m = r.basis->run->modes[k];
-    const double s = m.omega2 - m.alpha * m.alpha;
-    // No bound for undamped or nearly critical modes: the run stays modal (exact) instead.
-    if (!(m.alpha > 0) || !(s > 0.25 * m.omega2)) return std::numeric_limits<double>::infinity();
-    const double w = std::sqrt(s), q0 = q0_[r.lo + k], P = p0_[r.lo + k] + m.alpha * q0;
-    const double Cq = std::hypot(q0, P / w);
-    su += Cq;
-    sv += m.alpha * Cq + std::hypot(P, w * q0);
-    alpha = m.alpha;
-  }
-  return std::max({0.0, std::log(su / eps_u_) / alpha, std::log(sv / eps_v_settle_) / alpha});
 }
 
 void ModalRuns::end() {

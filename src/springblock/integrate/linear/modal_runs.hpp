@@ -27,6 +27,7 @@
 
 #include <Eigen/Dense>
 
+#include "springblock/integrate/linear/affine_paths.hpp"
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/linear/run_basis.hpp"
@@ -52,8 +53,8 @@ class ModalRuns {
   // Transients below these (in u and v, every row) count as gone: see settled_after().
   void set_settle_scales(double eps_u, double eps_v) { eps_u_ = eps_u, eps_v_settle_ = eps_v; }
   // For the run holding block i: a time after which its deviation from the affine path is
-  // below the settle scales in every row (from each mode's exponential envelope at projection;
-  // +inf without damping or with a mode not clearly underdamped, where no bound is taken).
+  // below the settle scales in every row (envelope.hpp, from its modes at projection;
+  // +inf without damping or with a mode not underdamped, where no bound is taken).
   // Lets the active set settle a kept groove run without evaluating it.
   double settled_after(int i) const { return runs_[run_of_[i]].settled_after; }
   // True if a modal run spans exactly [lo, hi).
@@ -96,7 +97,7 @@ class ModalRuns {
   struct Basis {
     const RunBasis* run;             // the run shape's modes (shared cache)
     std::vector<Transition> grid;    // per mode: transition over the march grid
-    std::vector<double> B, a0, gL, gR;  // particular solution pieces (see add())
+    const AffineShapes::Shape* path;  // the affine path's pieces (see add())
   };
   struct Run {
     int lo, hi;
@@ -112,8 +113,7 @@ class ModalRuns {
   // Rows of run r from modal coordinates q, qd at time t into u, v (rows [r0, r1) stepping by dr).
   void rows(const Run& r, double t, const double* q, const double* qd, int r0, int r1, int dr, double* u,
             double* v) const;
-  double envelope_time(const Run& r) const;
-  const Basis& basis(const Chain& c, int n, bool left, bool right);
+  const Basis& basis(int n, bool left, bool right);
   // Modal coordinates of run r at time t into q, qd (per mode, indices lo.. of the flat arrays).
   void coords(const Run& r, double t, double* q, double* qd) const;
 
@@ -121,6 +121,7 @@ class ModalRuns {
   double K_int_, eps_v_, H_, sample_dt_ = 0;
   double eps_u_ = 0, eps_v_settle_ = 0;  // settle scales (set_settle_scales)
   RunBases modes_;
+  AffineShapes shapes_;
   std::map<std::tuple<int, bool, bool>, Basis> bases_;
   std::vector<Run> runs_;
   std::vector<int> run_of_;                  // block -> index in runs_ (-1: not in a modal run)

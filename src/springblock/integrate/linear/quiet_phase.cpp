@@ -1,4 +1,5 @@
 #include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/linear/envelope.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,7 @@ double affine_crossing(double a, double b, double f) {
 
 }  // namespace
 
-QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
+QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c), shapes_(c) {
   const int N = c.N;
   int offset = 0;
   for (int i = 0; i < N;) {
@@ -38,8 +39,6 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
   B_.resize(offset);
   q0_.resize(offset);
   p0_.resize(offset);
-  rhs_.resize(offset);
-  work_.resize(offset);
 
   // Groove index -> segment, to find the segments each contact block borders.
   std::vector<int> seg_of(N, -1);
@@ -79,35 +78,20 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c) {
 
 // A, B of segment s from the stuck neighbours' positions in u, and the modal coordinates of the
 // deviation from them at t0.
-void QuietPhase::project(const Chain& c, const GrooveRun& s, const double* u, const double* v) {
-  const double t0 = t0_, mg = c.m * c.gamma;
+void QuietPhase::project(const GrooveRun& s, const double* u, const double* v) {
+  const double t0 = t0_;
   const RunBasis& d = *s.basis;
   double* A = A_.data() + s.offset;
   double* B = B_.data() + s.offset;
   double* q0 = q0_.data() + s.offset;
   double* p0 = p0_.data() + s.offset;
-  double* w = work_.data() + s.offset;
-  // K_seg^{-1} x = Q diag(1/lambda) Q^T x; B from the slider load, then A from the stuck
-  // neighbours' springs minus the damping force of the drift velocity B.
-  auto solve = [&](const double* x, double* out) {
-    for (int k = 0; k < s.n; ++k) {
-      double dot = 0;
-      for (int r = 0; r < s.n; ++r) dot += d.Q(r, k) * x[r];
-      w[k] = dot / d.lambda[k];
-    }
-    for (int r = 0; r < s.n; ++r) {
-      double sum = 0;
-      for (int k = 0; k < s.n; ++k) sum += d.Q(r, k) * w[k];
-      out[r] = sum;
-    }
-  };
-  double* x = rhs_.data() + s.offset;
-  for (int r = 0; r < s.n; ++r) x[r] = c.K_s * c.v_slider;
-  solve(x, B);
-  for (int r = 0; r < s.n; ++r) x[r] = -mg * B[r];
-  if (s.left_stuck) x[0] += c.K_int * u[s.first - 1];
-  if (s.right_stuck) x[s.n - 1] += c.K_int * u[s.first + s.n];
-  solve(x, A);
+  // The affine path from the stuck neighbours' positions (affine_paths.hpp).
+  const AffineShapes::Shape& path = shapes_.get(s.n, s.left_stuck, s.right_stuck);
+  const double uL = s.left_stuck ? u[s.first - 1] : 0.0, uR = s.right_stuck ? u[s.first + s.n] : 0.0;
+  for (int r = 0; r < s.n; ++r) {
+    B[r] = path.B[r];
+    A[r] = path.a0[r] + uL * path.gL[r] + uR * path.gR[r];
+  }
   for (int k = 0; k < s.n; ++k) {
     double qk = 0, pk = 0;
     for (int r = 0; r < s.n; ++r) {
@@ -123,43 +107,25 @@ void QuietPhase::project(const Chain& c, const GrooveRun& s, const double* u, co
 // Underdamped modes shrink at least like e^{-alpha tau} (amplitude and velocity amplitude); once
 // below 1e-17 of the segment's u and v scales they no longer change a double (dead_tau), and
 // below the sample scales they are dropped from samples (sample_dead_tau).
-void QuietPhase::set_dead_times(const Chain& c, GrooveRun& s) const {
-  const RunBasis& d = *s.basis;
-  const double t0 = t0_;
+void QuietPhase::set_dead_times(GrooveRun& s) const {
   const double* A = A_.data() + s.offset;
   const double* B = B_.data() + s.offset;
-  const double* q0 = q0_.data() + s.offset;
-  const double* p0 = p0_.data() + s.offset;
-  double amp = 0, vamp = 0, uscale = 0, vscale = 0, alpha = 0.5 * c.gamma;
-  bool decays = alpha > 0;
-  for (int k = 0; k < s.n; ++k) {
-    const double s2 = d.modes[k].omega2 - alpha * alpha;
-    if (s2 <= 0) decays = false;
-    const double wd = std::sqrt(std::max(s2, 0.0));
-    const double a_k = decays ? std::hypot(q0[k], (p0[k] + alpha * q0[k]) / wd) : 0.0;
-    amp += a_k;
-    vamp += a_k * std::sqrt(d.modes[k].omega2);
-  }
+  double uscale = 0, vscale = 0;
   for (int r = 0; r < s.n; ++r) {
-    uscale = std::max(uscale, std::fabs(A[r] + B[r] * t0));
+    uscale = std::max(uscale, std::fabs(A[r] + B[r] * t0_));
     vscale = std::max(vscale, std::fabs(B[r]));
   }
-  s.dead_tau = std::numeric_limits<double>::infinity();
-  if (decays && uscale > 0 && vscale > 0)
-    s.dead_tau = std::max({0.0, std::log(amp / (1e-17 * uscale)) / alpha, std::log(vamp / (1e-17 * vscale)) / alpha});
-  // The bound on every row is amp e^{-alpha tau}, on every velocity vamp e^{-alpha tau}.
-  s.sample_dead_tau = s.dead_tau;
-  if (decays && sample_eps_u_ > 0 && sample_eps_v_ > 0)
-    s.sample_dead_tau = std::min(s.dead_tau, std::max({0.0, std::log(amp / sample_eps_u_) / alpha,
-                                                       std::log(vamp / sample_eps_v_) / alpha}));
+  const TransientEnvelope env = transient_envelope(*s.basis, q0_.data() + s.offset, p0_.data() + s.offset);
+  s.dead_tau = env.time_below(1e-17 * uscale, 1e-17 * vscale);
+  s.sample_dead_tau = std::min(s.dead_tau, env.time_below(sample_eps_u_, sample_eps_v_));
 }
 
 void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
   t0_ = t0;
   sample_valid_ = false;
   for (GrooveRun& s : segs_) {
-    project(c, s, u, v);
-    set_dead_times(c, s);
+    project(s, u, v);
+    set_dead_times(s);
   }
   for (std::size_t k = 0; k < affine_blocks_.size(); ++k)
     affine_a_[k] = c.driving_force(affine_blocks_[k], u, v, t0);

@@ -28,6 +28,7 @@
 
 #include <Eigen/Dense>
 
+#include "springblock/integrate/linear/affine_paths.hpp"
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/linear/run_basis.hpp"
@@ -97,8 +98,8 @@ class QuietPhase {
 
   // begin()'s work per segment: the particular solution and the modal coordinates of the
   // deviation from it; the times after which the modes no longer count.
-  void project(const Chain& c, const GrooveRun& s, const double* u, const double* v);
-  void set_dead_times(const Chain& c, GrooveRun& s) const;
+  void project(const GrooveRun& s, const double* u, const double* v);
+  void set_dead_times(GrooveRun& s) const;
   // u, v of segment s at absolute time t from its modal coordinates q, qd.
   void to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
                    double* v) const;
@@ -108,11 +109,12 @@ class QuietPhase {
 
   double K_int_ = 0, t0_ = 0;
   RunBases bases_;
+  AffineShapes shapes_;
   std::vector<GrooveRun> segs_;
   std::vector<Edge> edges_;
   std::vector<int> affine_blocks_;     // contact blocks with no groove neighbour
   std::vector<double> affine_a_;       // their force at t0
-  std::vector<double> A_, B_, q0_, p0_, rhs_, work_;  // flat, one entry per groove block
+  std::vector<double> A_, B_, q0_, p0_;  // flat, one entry per groove block
   std::vector<double> qs_, qds_;  // modal coordinates at the last sample
   std::vector<int> order_;        // edges by increasing lower bound
   double sample_dt_ = 0, ts_ = 0;

@@ -1,0 +1,49 @@
+#pragma once
+// How long a run's transient lasts: a bound, from the modal coordinates at the start, on every
+// row's deviation from the affine path. Written once for the quiet phase (when groove modes stop
+// changing a double, or a sample) and the modal runs (when a groove run has settled).
+//
+// An underdamped mode (s = omega^2 - alpha^2 > 0, w = sqrt(s)) from (q0, p0) is
+//   q = e^{-alpha tau} (q0 cos w tau + (P / w) sin w tau),  P = p0 + alpha q0,
+// so |q| <= e^{-alpha tau} C with C = hypot(q0, P / w), and q' is a sinusoid of amplitude
+// hypot(P - alpha q0, alpha P / w + w q0) = omega C, so |q'| <= e^{-alpha tau} omega C. The rows
+// mix the modes with |Q_rk| <= 1, so the sums over modes bound every row. All modes share
+// alpha = gamma / 2. With no damping, or a mode not underdamped, no bound is taken.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "springblock/integrate/linear/run_basis.hpp"
+
+namespace sb::event_detail {
+
+struct TransientEnvelope {
+  double u = 0, v = 0;  // bounds on every row's |u - path| and |v - drift| at tau = 0
+  double alpha = 0;     // decay rate of both
+  bool decays = false;  // false: no bound (the transient is kept for ever)
+
+  // The time after which the bounds are below eps_u and eps_v (infinity without a bound).
+  double time_below(double eps_u, double eps_v) const {
+    if (!decays || !(eps_u > 0) || !(eps_v > 0)) return std::numeric_limits<double>::infinity();
+    return std::max({0.0, std::log(u / eps_u) / alpha, std::log(v / eps_v) / alpha});
+  }
+};
+
+// q0, p0: the run's modal coordinates (one per mode of b).
+inline TransientEnvelope transient_envelope(const RunBasis& b, const double* q0, const double* p0) {
+  TransientEnvelope e;
+  for (int k = 0; k < b.n(); ++k) {
+    const DampedMode& m = b.modes[k];
+    const double s = m.omega2 - m.alpha * m.alpha;
+    if (!(m.alpha > 0) || !(s > 0)) return TransientEnvelope{};
+    const double w = std::sqrt(s), P = p0[k] + m.alpha * q0[k];
+    const double C = std::hypot(q0[k], P / w);
+    e.u += C;
+    e.v += C * std::sqrt(m.omega2);
+    e.alpha = m.alpha;
+  }
+  e.decays = b.n() > 0;
+  return e;
+}
+
+}  // namespace sb::event_detail
