@@ -57,7 +57,7 @@ void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touc
   // grooves-only, because its stuck boundary blocks have not moved since they were computed.
   // kind_ still holds the previous classification until it is refilled below.
   find_runs(c, s);
-  classify_runs(c, s, touched);
+  classify_runs(s, touched);
   kind_prev_.swap(kind_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
   for (const Run& r : runs_) std::fill(kind_.begin() + r.span.lo, kind_.begin() + r.span.hi, r.kind);
@@ -109,7 +109,7 @@ bool ActiveSet::untouched(const State& s, const std::uint8_t* touched, BlockRang
   return true;
 }
 
-void ActiveSet::classify_runs(const Chain& c, const State& s, const std::uint8_t* touched) {
+void ActiveSet::classify_runs(const State& s, const std::uint8_t* touched) {
   for (Run& r : runs_) {
     if (r.grooves) {
       const std::uint8_t was = kind_[r.span.lo];

@@ -102,7 +102,7 @@ class ActiveSet {
   // The steps of rebuild(): the maximal runs of mobile blocks; their kinds; the modal runs'
   // projections; the blocks whose event time may have changed; their new event times.
   void find_runs(const Chain& c, const State& s);
-  void classify_runs(const Chain& c, const State& s, const std::uint8_t* touched);
+  void classify_runs(const State& s, const std::uint8_t* touched);
   void project_modal(const Chain& c, const State& s, const std::uint8_t* touched);
   void collect_candidates(const State& s, const std::uint8_t* touched);
   void update_events(const Chain& c, const State& s, const std::uint8_t* touched);
