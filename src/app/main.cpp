@@ -18,7 +18,7 @@
 #include "springblock/errors.hpp"
 #include "springblock/io.hpp"
 #include "springblock/scene.hpp"
-#include "springblock/theory.hpp"
+#include "springblock/scene_theory.hpp"
 
 namespace {
 
@@ -186,26 +186,11 @@ int cmd_theory(const TheoryArgs& a) {
   sb::Scene scene;
   a.fields.apply(scene);
   sb::validate(scene);
-  const auto d = scene.derived();
-  const int N = scene.geometry.N;
-  // The single block of the K_int = 0 limit: one block's mass and slider spring, and its share
-  // of the load on a surface where every block is in contact.
-  sb::theory::SingleBlock b{d.m_kg, d.K_s_N_per_m, scene.material.v_m_per_s, d.F_load_N / N};
-  const auto& f = scene.friction;
-  const double mu_d_pt = std::min(f.mu_d_mean, f.mu_s_mean);
-  auto c = sb::theory::cycle(b, f.mu_s_mean, mu_d_pt);
-  const double avg = sb::theory::mu_d_macro_gaussian(b, f.mu_s_mean, f.mu_s_sd, f.mu_d_mean, f.mu_d_sd);
-  nlohmann::json j = {{"block", {{"m_kg", b.m_kg}, {"k_N_per_m", b.k_N_per_m}, {"v_m_per_s", b.v_m_per_s}, {"F_n_N", b.F_n_N}}},
-                      {"mu_s", f.mu_s_mean}, {"mu_d", mu_d_pt},
-                      {"omega_rad_per_s", c.omega}, {"r0_m", c.r0_m}, {"T_d_s", c.T_d_s},
-                      {"delta_r_m", c.delta_r_m}, {"T_s_s", c.T_s_s},
-                      {"F_stat_mean_over_Fn", c.F_stat_mean_over_Fn}, {"mu_d_macro", c.mu_d_macro},
-                      {"mu_d_macro_gaussian", avg},
-                      {"gaussian", {{"mu_s_sd", f.mu_s_sd}, {"mu_d_sd", f.mu_d_sd}}}};
+  const auto p = sb::theory::predict(scene);
   if (a.json)
-    std::cout << j.dump(2) << "\n";
+    std::cout << nlohmann::json(p).dump(2) << "\n";
   else
-    print_theory_text(b, f, mu_d_pt, c, avg);
+    print_theory_text(p.block, scene.friction, p.mu_d, p.cycle, p.mu_d_macro_gaussian);
   return shell::kOk;
 }
 

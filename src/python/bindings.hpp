@@ -1,0 +1,30 @@
+#pragma once
+// The parts of the Python module, one file each, registered by module.cpp.
+#include <nlohmann/json_fwd.hpp>
+#include <pybind11/pybind11.h>
+
+#include "springblock/ensemble.hpp"
+#include "springblock/scene.hpp"
+
+namespace sb::python {
+
+namespace py = pybind11;
+
+// What springblock.run returns: the ensemble and the scene it ran (for the results JSON and the
+// reasons a statistic was not measured).
+struct Result {
+  sb::Scene scene;
+  sb::EnsembleResult ensemble;
+};
+
+void bind_errors(py::module_& m);  // errors.cpp: sb::InputError -> springblock.InputError (a ValueError)
+void bind_scene(py::module_& m);   // scene.cpp: springblock.Scene, springblock.scene_fields
+void bind_result(py::module_& m);  // result.cpp: springblock.Result, Statistic, Series, Stress
+void bind_run(py::module_& m);     // run.cpp: springblock.run, springblock.run_many
+void bind_theory(py::module_& m);  // theory.cpp: the submodule springblock.theory
+
+// A JSON value as the Python object json.loads would give: the library's JSON (scenes, results)
+// reaches Python without a second serialiser.
+py::object to_python(const nlohmann::json& j);
+
+}  // namespace sb::python

@@ -1,0 +1,95 @@
+// springblock.Scene: a validated scene built from field names and values exactly as a scene file
+// is (sb::apply_scene_json over the library's field table, then sb::validate), so Python accepts,
+// converts and refuses every field as the command line does, with the same defaults and messages.
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "bindings.hpp"
+#include "springblock/errors.hpp"
+#include "springblock/scene.hpp"
+#include "springblock/scene_fields.hpp"
+
+namespace sb::python {
+namespace {
+
+// The text the command line would be given for `value`: Python numbers as they print (360 ->
+// "360", 0.05 -> "0.05"; numpy scalars too), booleans as true/false, strings unchanged. Anything
+// else becomes null, which the scene-file check refuses naming the field.
+nlohmann::json field_text(const py::handle& value) {
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (PyIndex_Check(value.ptr())) return py::str(py::int_(py::reinterpret_borrow<py::object>(value))).cast<std::string>();
+  if (py::isinstance<py::float_>(value) || py::hasattr(value, "__float__")) {
+    // A whole float is written as a whole number (30.0 -> "30"), as a scene file's 30.0 is, so a
+    // count such as N accepts it; either text gives the same double to a quantity.
+    const py::float_ x(py::reinterpret_borrow<py::object>(value));
+    if (std::isfinite(x.cast<double>()) && x.attr("is_integer")().cast<bool>()) return py::str(py::int_(x)).cast<std::string>();
+    return py::repr(x).cast<std::string>();
+  }
+  return nullptr;
+}
+
+// `base` with `fields` overlaid, validated. Throws sb::InputError naming the field.
+sb::Scene with_fields(sb::Scene scene, const py::dict& fields) {
+  nlohmann::json j = nlohmann::json::object();
+  for (auto [key, value] : fields) {
+    if (!py::isinstance<py::str>(key))
+      throw sb::InputError(py::repr(key).cast<std::string>(), "a field name must be a string");
+    j[key.cast<std::string>()] = field_text(value);
+  }
+  sb::apply_scene_json(scene, j);
+  sb::validate(scene);
+  return scene;
+}
+
+sb::Scene make_scene(const py::object& fields, const py::kwargs& more) {
+  py::dict all;
+  if (!fields.is_none()) {
+    if (!py::isinstance<py::dict>(fields))
+      throw sb::InputError("scene", "Scene() takes a dict of fields and/or keyword arguments");
+    all.attr("update")(fields);
+  }
+  all.attr("update")(more);  // keywords override the dict, as options override a scene file
+  return with_fields(sb::Scene{}, all);
+}
+
+std::string scene_repr(const sb::Scene& s) {
+  char text[256];
+  std::snprintf(text, sizeof text, "springblock.Scene(N=%d, length=%gm, pattern='%s', method='%s', reps=%d, seed=%llu)",
+                s.geometry.N, s.geometry.L_x_m, s.pattern.text().c_str(), sb::method_name(s.run.method).c_str(),
+                s.reps, static_cast<unsigned long long>(s.seed));
+  return text;
+}
+
+py::list field_table() {
+  py::list rows;
+  for (const auto& f : sb::scene_fields())
+    rows.append(py::dict(py::arg("key") = f.key, py::arg("help") = f.help, py::arg("example") = f.example));
+  return rows;
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+  py::class_<sb::Scene>(m, "Scene",
+                        "A validated scene. Fields are the command line's options with '_' (N, length, pattern,\n"
+                        "mu_s, reps, seed, ...; see scene_fields()), given as keyword arguments and/or a dict,\n"
+                        "with the same defaults and unit strings ('7.2cm', '10/ms'); plain numbers are SI.\n"
+                        "Bad input raises InputError (a ValueError) naming the field and its allowed range.")
+      .def(py::init(&make_scene), py::arg("fields") = py::none())
+      .def("replace", [](const sb::Scene& s, const py::kwargs& kw) { return with_fields(s, kw); },
+           "A copy with the given fields changed (validated again).")
+      .def("to_dict", [](const sb::Scene& s) { return to_python(nlohmann::json(s)); },
+           "The scene as every results file records it (SI units, derived parameters, t0, duration).")
+      .def_property_readonly("N", [](const sb::Scene& s) { return s.geometry.N; })
+      .def_property_readonly("reps", [](const sb::Scene& s) { return s.reps; })
+      .def_property_readonly("seed", [](const sb::Scene& s) { return s.seed; })
+      .def_property_readonly("t0_s", &sb::Scene::t0_s, "loading time t0 [s]")
+      .def_property_readonly("duration_s", &sb::Scene::duration, "simulated time [s]")
+      .def("__repr__", &scene_repr);
+  m.def("scene_fields", &field_table,
+        "Every scene field: key (the keyword), help (meaning, default, units) and an example value.");
+}
+
+}  // namespace sb::python
