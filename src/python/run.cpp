@@ -53,9 +53,8 @@ std::vector<Result> run_many(const std::vector<sb::Scene>& scenes, bool series) 
 }  // namespace
 
 void bind_run(py::module_& m) {
-  // series defaults to off as on the command line: keeping mu(t) changes how repetition 0's
-  // samples are taken, which can move its mu_s and mu_d in the last bit (`springblock run
-  // --series` moves them alike), so run(scene) gives exactly what `springblock run` prints.
+  // series defaults to off as on the command line (mu(t) costs memory); keeping it changes no
+  // statistic (FrictionObserver.KeepingTheSeriesChangesNoStatistic*).
   m.def("run", &run, py::arg("scene"), py::arg("series") = false,
         "Run the scene's repetitions (in parallel over its `threads`) and return a Result. The same\n"
         "scene and seed give the numbers `springblock run` gives (with series=True, those of\n"

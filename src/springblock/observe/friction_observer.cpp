@@ -16,6 +16,7 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
   int n_sliding = 0;
   const double* u = s.u.data();
   const double slider = c.v_slider * s.t;
+  const ForceCoefficients k = c.force_coefficients();
   for (int i : contacts_) {
     double f;
     if (s.dir[i] != 0) {
@@ -23,7 +24,7 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
       ++n_sliding;
     } else if (i > 0 && i + 1 < c.N) {
       // A stuck block has v = 0: no damping term.
-      f = c.K_s * (slider - u[i]) + c.K_int * (u[i - 1] - 2.0 * u[i] + u[i + 1]);
+      f = force_interior<true, false>(k, i, slider, u, s.v.data(), 0.0);
     } else {
       f = c.driving_force(i, u, s.v.data(), s.t);
     }
@@ -70,10 +71,17 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
 
 long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, double dt, long n, const double* a,
                                      const double* b) {
-  // Series and stress snapshots want every sample's state: served one by one.
-  if (cfg_.keep_series || next_stress_ < cfg_.stress_times_s.size() || n <= 0) return 0;
-  if (contacts_.empty()) return 0;
+  // A stretch feeds the statistics and the series alike, so keeping mu(t) or taking stress
+  // snapshots never changes mu_s or mu_d (they were once served one by one and differed in the
+  // last bits: FrictionObserver.KeepingTheSeriesChangesNoStatistic). A stress snapshot needs the
+  // state: the stretch ends before its time, and sample() takes it.
+  if (n <= 0 || contacts_.empty()) return 0;
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
+  if (next_stress_ < cfg_.stress_times_s.size()) {
+    const double t_stress = cfg_.stress_times_s[next_stress_];
+    while (n > 0 && t_of(k0 + n - 1) >= t_stress) --n;
+    if (n <= 0) return 0;
+  }
   const double t_first = t_of(k0);
   // The stretch ends before the first sample at which some block's force changes sign.
   double A = 0, B = 0, As = 0, Bs = 0, t_sign = std::numeric_limits<double>::infinity();
@@ -112,6 +120,8 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
     if (last > running_max_) running_max_ = last, t_max_ = t_of(k0 + take - 1);
     auto mu_signed = [&](long k) { return (As + Bs * t_of(k)) * inv; };
     running_max_signed_ = std::max({running_max_signed_, mu_signed(k0), mu_signed(k0 + take - 1)});
+    if (cfg_.keep_series)
+      for (long k = k0; k < k0 + take; ++k) series_.push_back({t_of(k), mu(k), mu_signed(k), 0});
     last_t_ = t_of(k0 + take - 1);
     if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
     return take;
@@ -129,6 +139,9 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
     sum_mu_signed_ += (As * cnt + Bs * dt * sum_k) * inv;
     n_window_ += cnt;
   }
+  if (cfg_.keep_series)
+    for (long k = k0; k < k0 + m; ++k)
+      series_.push_back({t_of(k), (A + B * t_of(k)) * inv, (As + Bs * t_of(k)) * inv, 0});
   last_t_ = t_of(k0 + m - 1);
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
   return m;
