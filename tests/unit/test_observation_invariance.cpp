@@ -1,11 +1,10 @@
-// What a scene observes must not change what it measures: keeping mu(t) (the series) leaves every
-// repetition's mu_s, mu_d and peak unchanged to the last bit, and stress snapshots leave mu_s
-// unchanged and mu_d to round-off (see below), on
+// What a scene observes must not change what it measures: keeping mu(t) (the series) or taking
+// stress snapshots leaves every repetition's mu_s, mu_d and peak unchanged to the last bit, on
 // every integrator path (the event method with grooves, where quiet phases hand the observer
 // affine stretches; a smooth chain; the per-block K_int = 0 solver; RK4). They once differed in
-// the last bits, because the series switched the observer from affine stretches to per-sample
-// sums. The series itself must agree with the statistics it accompanies: its peak before the
-// end of loading is mu_s.
+// the last bits, because the series and the snapshots switched the observer from affine
+// stretches to per-sample sums. The series itself must agree with the statistics it accompanies:
+// its peak before the end of loading is mu_s.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,22 +42,13 @@ void expect_observation_changes_nothing(Scene plain) {
   int windows = 0;
   for (std::size_t r = 0; r < a.runs.size(); ++r) {
     for (const auto* other : {&b.runs[r], &c.runs[r]}) {
-      const bool series = other == &b.runs[r];
-      const std::string where = "rep " + std::to_string(r) + (series ? " (series)" : " (stress)");
+      const std::string where = "rep " + std::to_string(r) + (other == &b.runs[r] ? " (series)" : " (stress)");
       EXPECT_EQ(a.runs[r].mu_s, other->mu_s) << where;
       EXPECT_EQ(a.runs[r].mu_s_signed, other->mu_s_signed) << where;
       EXPECT_EQ(a.runs[r].t_peak_s, other->t_peak_s) << where;
       EXPECT_EQ(a.runs[r].window_samples, other->window_samples) << where;
-      if (series) {
-        EXPECT_EQ(a.runs[r].mu_d, other->mu_d) << where;
-        EXPECT_EQ(a.runs[r].mu_d_signed, other->mu_d_signed) << where;
-      } else {
-        // A snapshot needs the state, so the affine stretch that would hold its sample is cut
-        // there and the window's closed-form sums are grouped differently: mu_d may move by
-        // round-off (the trajectory does not: mu_s and the window are exact).
-        EXPECT_NEAR(a.runs[r].mu_d, other->mu_d, 1e-14 * a.runs[r].mu_d) << where;
-        EXPECT_NEAR(a.runs[r].mu_d_signed, other->mu_d_signed, 1e-14 * a.runs[r].mu_d) << where;
-      }
+      EXPECT_EQ(a.runs[r].mu_d, other->mu_d) << where;
+      EXPECT_EQ(a.runs[r].mu_d_signed, other->mu_d_signed) << where;
     }
     windows += a.runs[r].window_samples > 0;
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <limits>
 
 namespace sb {
@@ -56,32 +57,17 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
   }
 
   if (cfg_.keep_series) series_.push_back({s.t, mu, mu_signed, n_sliding});
-  while (next_stress_ < cfg_.stress_times_s.size() && s.t >= cfg_.stress_times_s[next_stress_]) {
-    StressSnapshot snap{s.t, std::vector<double>(c.N), std::vector<double>(c.N)};
-    for (int i = 0; i < c.N; ++i) {
-      const double f = friction_force(c, s, i);
-      snap.f_over_Fn[i] = c.contact[i] ? f / c.F_n : 0.0;
-      snap.sigma_over_P[i] = f / cfg_.block_area_P;
-    }
-    stress_.push_back(std::move(snap));
-    ++next_stress_;
-  }
+  while (stress_due(s.t)) add_snapshot(c, s.t, [&](int i) { return friction_force(c, s, i); });
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(s.t * 1e9), std::memory_order_relaxed);
 }
 
 long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, double dt, long n, const double* a,
                                      const double* b) {
-  // A stretch feeds the statistics and the series alike, so keeping mu(t) or taking stress
-  // snapshots never changes mu_s or mu_d (they were once served one by one and differed in the
-  // last bits: FrictionObserver.KeepingTheSeriesChangesNoStatistic). A stress snapshot needs the
-  // state: the stretch ends before its time, and sample() takes it.
+  // A stretch feeds the statistics, the series and the stress snapshots alike (record_stretch),
+  // so keeping mu(t) or taking snapshots never changes mu_s or mu_d (they were once served one
+  // by one and differed in the last bits: FrictionObserver.KeepingTheSeriesChangesNoStatistic*).
   if (n <= 0 || contacts_.empty()) return 0;
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
-  if (next_stress_ < cfg_.stress_times_s.size()) {
-    const double t_stress = cfg_.stress_times_s[next_stress_];
-    while (n > 0 && t_of(k0 + n - 1) >= t_stress) --n;
-    if (n <= 0) return 0;
-  }
   const double t_first = t_of(k0);
   // The stretch ends before the first sample at which some block's force changes sign.
   double A = 0, B = 0, As = 0, Bs = 0, t_sign = std::numeric_limits<double>::infinity();
@@ -96,6 +82,15 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   if (m <= 0) return 0;
   const double inv = 1.0 / cfg_.F_load;
   auto mu = [&](long k) { return (A + B * t_of(k)) * inv; };
+  auto mu_signed = [&](long k) { return (As + Bs * t_of(k)) * inv; };
+  // The series and the snapshots of the samples k0 .. k0 + count - 1 taken from the stretch.
+  auto record_stretch = [&](long count) {
+    if (cfg_.keep_series)
+      for (long k = k0; k < k0 + count; ++k) series_.push_back({t_of(k), mu(k), mu_signed(k), 0});
+    for (long k = k0; k < k0 + count; ++k)
+      while (stress_due(t_of(k)))
+        add_snapshot(c, t_of(k), [&](int i) { return c.contact[i] ? a[i] + b[i] * t_of(k) : 0.0; });
+  };
   if (!slipped_) {
     const bool all_slipped_rule = cfg_.peak_rule == ExtractionRules::PeakRule::AllSlipped;
     // Nothing slips inside the stretch, so the all-slipped rule cannot end loading here (if it
@@ -118,10 +113,8 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
     const double first = mu(k0), last = mu(k0 + take - 1);
     if (first > running_max_) running_max_ = first, t_max_ = t_of(k0);
     if (last > running_max_) running_max_ = last, t_max_ = t_of(k0 + take - 1);
-    auto mu_signed = [&](long k) { return (As + Bs * t_of(k)) * inv; };
     running_max_signed_ = std::max({running_max_signed_, mu_signed(k0), mu_signed(k0 + take - 1)});
-    if (cfg_.keep_series)
-      for (long k = k0; k < k0 + take; ++k) series_.push_back({t_of(k), mu(k), mu_signed(k), 0});
+    record_stretch(take);
     last_t_ = t_of(k0 + take - 1);
     if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
     return take;
@@ -139,12 +132,25 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
     sum_mu_signed_ += (As * cnt + Bs * dt * sum_k) * inv;
     n_window_ += cnt;
   }
-  if (cfg_.keep_series)
-    for (long k = k0; k < k0 + m; ++k)
-      series_.push_back({t_of(k), (A + B * t_of(k)) * inv, (As + Bs * t_of(k)) * inv, 0});
+  record_stretch(m);
   last_t_ = t_of(k0 + m - 1);
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
   return m;
+}
+
+bool FrictionObserver::stress_due(double t) const {
+  return next_stress_ < cfg_.stress_times_s.size() && t >= cfg_.stress_times_s[next_stress_];
+}
+
+void FrictionObserver::add_snapshot(const Chain& c, double t, const std::function<double(int)>& friction) {
+  StressSnapshot snap{t, std::vector<double>(c.N), std::vector<double>(c.N)};
+  for (int i = 0; i < c.N; ++i) {
+    const double f = friction(i);
+    snap.f_over_Fn[i] = c.contact[i] ? f / c.F_n : 0.0;
+    snap.sigma_over_P[i] = f / cfg_.block_area_P;
+  }
+  stress_.push_back(std::move(snap));
+  ++next_stress_;
 }
 
 bool FrictionObserver::wants_stop() const {

@@ -7,6 +7,7 @@
 // would equal mu_d exactly in both regimes. The signed sum is recorded too (mu_signed).
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -73,6 +74,11 @@ class FrictionObserver final : public Observer {
   const std::vector<StressSnapshot>& stress() const { return stress_; }
 
  private:
+  // A stress snapshot is due at a sample at time t (the first sample at or after its time).
+  bool stress_due(double t) const;
+  // Record one at time t from each block's friction force.
+  void add_snapshot(const Chain& c, double t, const std::function<double(int)>& friction);
+
   FrictionObserverConfig cfg_;
   double running_max_ = -1, t_max_ = 0, t_slip_ = std::numeric_limits<double>::quiet_NaN();
   double running_max_signed_ = -std::numeric_limits<double>::infinity();

@@ -53,8 +53,8 @@ void EventQueue::refresh() {
 
 void EventQueue::offer(int i) {
   const bool rc = recheck_[i] != 0;
-  if (t_[i] < next_.t || (t_[i] == next_.t && (next_.recheck ? !rc || i < next_.block : !rc && i < next_.block)))
-    next_ = {t_[i], i, rc};
+  // The trees' order; with no entry yet (block -1, t = inf) only a finite time counts.
+  if (next_.block < 0 ? t_[i] < kInf : earlier(i, next_.block)) next_ = {t_[i], i, rc};
   if (!rc && t_[i] < next_real_) next_real_ = t_[i];
 }
 

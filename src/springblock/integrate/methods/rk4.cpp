@@ -27,14 +27,6 @@ struct Workspace {
       : a(N), us(N), vs(N), su(N), sv(N), mobile(N), f_kin(N), slide_dir(N), f_screen(N), stop_bias(N) {}
 };
 
-// Acceleration of every block: the steppers' one right-hand side (step/chain_accel.hpp) over the
-// whole chain, specialised at compile time on the smooth effects present.
-template <bool Coupled, bool Damped>
-SB_INLINE void acceleration(const Chain& c, const double* __restrict u, const double* __restrict v, double t,
-                            const double* __restrict mobile, const double* __restrict f_kin, double* __restrict a) {
-  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, u, v, t, mobile, f_kin, a);
-}
-
 // One intermediate RK4 stage: accumulate the stage slopes (weight 2) and form the next stage
 // input y + c h k. A separate function with restrict-qualified parameters lets GCC vectorise
 // it (the same loops inlined with restrict locals did not: measured 15-20% on the step).
@@ -60,17 +52,17 @@ SB_KERNEL_CLONES void rk4_step(const Chain& c, State& s, Workspace& w, double t,
   double* su = w.su.data();
   double* sv = w.sv.data();
   const double h2 = 0.5 * h, h6 = h / 6.0;
-  acceleration<Coupled, Damped>(c, u, v, t, w.mobile.data(), w.f_kin.data(), a);
+  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, u, v, t, w.mobile.data(), w.f_kin.data(), a);
   // Stage 1 starts the accumulators: su = k1_u = v, sv = k1_v = a.
   std::copy(v, v + N, su);
   std::copy(a, a + N, sv);
   for (int i = 0; i < N; ++i) us[i] = u[i] + h2 * v[i];
   for (int i = 0; i < N; ++i) vs[i] = v[i] + h2 * a[i];
-  acceleration<Coupled, Damped>(c, us, vs, t + h2, w.mobile.data(), w.f_kin.data(), a);
+  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, us, vs, t + h2, w.mobile.data(), w.f_kin.data(), a);
   rk4_stage(N, u, v, a, h2, us, vs, su, sv);
-  acceleration<Coupled, Damped>(c, us, vs, t + h2, w.mobile.data(), w.f_kin.data(), a);
+  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, us, vs, t + h2, w.mobile.data(), w.f_kin.data(), a);
   rk4_stage(N, u, v, a, h, us, vs, su, sv);
-  acceleration<Coupled, Damped>(c, us, vs, t + h, w.mobile.data(), w.f_kin.data(), a);
+  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, us, vs, t + h, w.mobile.data(), w.f_kin.data(), a);
   for (int i = 0; i < N; ++i) {
     u[i] += h6 * (su[i] + vs[i]);
     v[i] += h6 * (sv[i] + a[i]);
