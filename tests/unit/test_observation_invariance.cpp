@@ -11,6 +11,8 @@
 #include <string>
 
 #include "springblock/ensemble.hpp"
+#include "springblock/integrate/integrator.hpp"
+#include "springblock/observe/friction_observer.hpp"
 #include "springblock/scene_fields.hpp"
 
 using namespace sb;
@@ -63,7 +65,53 @@ void expect_observation_changes_nothing(Scene plain) {
   EXPECT_EQ(c.runs[0].stress.size(), 2u);
 }
 
+// Forwards every sample to a FrictionObserver but takes no affine stretch: the integrator then
+// serves each sample one by one, with the state.
+class PerSample final : public Observer {
+ public:
+  explicit PerSample(FrictionObserver& o) : o_(o) {}
+  void sample(const Chain& c, const State& s) override { o_.sample(c, s); }
+  bool wants_stop() const override { return o_.wants_stop(); }
+  bool reads_groove_interiors() const override { return o_.reads_groove_interiors(); }
+  bool reads_only_friction() const override { return o_.reads_only_friction(); }
+
+ private:
+  FrictionObserver& o_;
+};
+
+// The series built from affine stretches against the one built sample by sample: the same
+// times and sliding counts, mu to round-off.
+void expect_stretch_series_is_the_per_sample_one(const Scene& sc) {
+  const Chain c = build_chain(sc, 0);
+  FrictionObserverConfig cfg;
+  cfg.F_load = c.F_load;
+  cfg.keep_series = true;
+  FrictionObserver stretched(cfg), single(cfg);
+  PerSample per_sample(single);
+  State s1 = State::at_rest(c), s2 = State::at_rest(c);
+  make_integrator(sc.run)->run(c, s1, sc.duration(), sc.run.sample_dt_s, stretched);
+  make_integrator(sc.run)->run(c, s2, sc.duration(), sc.run.sample_dt_s, per_sample);
+  const auto &a = stretched.series(), &b = single.series();
+  ASSERT_EQ(a.size(), b.size());
+  int sliding = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    ASSERT_EQ(a[k].t, b[k].t) << k;
+    ASSERT_EQ(a[k].n_sliding, b[k].n_sliding) << "sample " << k << " t " << a[k].t;
+    ASSERT_NEAR(a[k].mu, b[k].mu, 1e-12) << k;
+    sliding += a[k].n_sliding > 0;
+  }
+  EXPECT_GT(sliding, 0);  // not vacuous: blocks slide at some samples
+}
+
 }  // namespace
+
+TEST(FrictionObserver, SeriesFromStretchesEqualsSampleBySampleUncoupled) {
+  expect_stretch_series_is_the_per_sample_one(base("smooth", "event", "0"));
+}
+
+TEST(FrictionObserver, SeriesFromStretchesEqualsSampleBySampleEventWithGrooves) {
+  expect_stretch_series_is_the_per_sample_one(base("periodic:2,2", "event"));
+}
 
 TEST(FrictionObserver, KeepingTheSeriesChangesNoStatisticEventWithGrooves) {
   expect_observation_changes_nothing(base("periodic:2,2", "event"));

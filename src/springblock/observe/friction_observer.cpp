@@ -71,11 +71,13 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   const double t_first = t_of(k0);
   // The stretch ends before the first sample at which some block's force changes sign.
   double A = 0, B = 0, As = 0, Bs = 0, t_sign = std::numeric_limits<double>::infinity();
+  int n_sliding = 0;  // constant across the stretch: nothing switches in it
   for (int i : contacts_) {
     const double f0 = a[i] + b[i] * t_first, sg = f0 >= 0 ? 1.0 : -1.0;
     if (b[i] != 0.0 && (b[i] > 0) != (sg > 0)) t_sign = std::min(t_sign, -a[i] / b[i]);
     A += sg * a[i], B += sg * b[i];
     As += a[i], Bs += b[i];
+    n_sliding += s.dir[i] != 0;
   }
   long m = n;
   while (m > 0 && t_of(k0 + m - 1) >= t_sign) --m;  // usually none: forces rarely change sign
@@ -83,59 +85,55 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   const double inv = 1.0 / cfg_.F_load;
   auto mu = [&](long k) { return (A + B * t_of(k)) * inv; };
   auto mu_signed = [&](long k) { return (As + Bs * t_of(k)) * inv; };
-  // The series and the snapshots of the samples k0 .. k0 + count - 1 taken from the stretch.
-  auto record_stretch = [&](long count) {
-    if (cfg_.keep_series)
-      for (long k = k0; k < k0 + count; ++k) series_.push_back({t_of(k), mu(k), mu_signed(k), 0});
-    for (long k = k0; k < k0 + count; ++k)
-      while (stress_due(t_of(k)))
-        add_snapshot(c, t_of(k), [&](int i) { return c.contact[i] ? a[i] + b[i] * t_of(k) : 0.0; });
-  };
+  long taken = m;
   if (!slipped_) {
     const bool all_slipped_rule = cfg_.peak_rule == ExtractionRules::PeakRule::AllSlipped;
     // Nothing slips inside the stretch, so the all-slipped rule cannot end loading here (if it
     // already holds, the first sample must end it: served by sample()).
     if (all_slipped_rule && !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact) return 0;
-    long take = m;
     if (!all_slipped_rule) {
       // Drop rule: loading ends at the first sample below (running max - drop); the max of an
       // affine sequence is at one end, so the running max is monotone: stop before any sample
       // where mu falls below the max so far minus the drop (that one goes to sample()).
       double rmax = running_max_;
-      for (take = 0; take < m; ++take) {
-        const double x = mu(k0 + take);
+      for (taken = 0; taken < m; ++taken) {
+        const double x = mu(k0 + taken);
         if (x < rmax - cfg_.peak_drop) break;
         rmax = std::max(rmax, x);
       }
-      if (take == 0) return 0;
+      if (taken == 0) return 0;
     }
     // Running maximum over the samples taken: at one end of the stretch (first one on a tie).
-    const double first = mu(k0), last = mu(k0 + take - 1);
+    const double first = mu(k0), last = mu(k0 + taken - 1);
     if (first > running_max_) running_max_ = first, t_max_ = t_of(k0);
-    if (last > running_max_) running_max_ = last, t_max_ = t_of(k0 + take - 1);
-    running_max_signed_ = std::max({running_max_signed_, mu_signed(k0), mu_signed(k0 + take - 1)});
-    record_stretch(take);
-    last_t_ = t_of(k0 + take - 1);
-    if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
-    return take;
+    if (last > running_max_) running_max_ = last, t_max_ = t_of(k0 + taken - 1);
+    running_max_signed_ = std::max({running_max_signed_, mu_signed(k0), mu_signed(k0 + taken - 1)});
+  } else {
+    // Dynamic phase: the window sums over the samples at or after its start.
+    const double t_win = t_slip_ + cfg_.mu_d_skip_s;
+    long j0 = 0;
+    while (j0 < m && t_of(k0 + j0) < t_win) ++j0;
+    const long cnt = m - j0;
+    if (cnt > 0) {
+      // sum over k of t_k = dt * (sum of k), exact in integers up to 2^53.
+      const long kk0 = k0 + j0, kk1 = k0 + m - 1;
+      const double sum_k = 0.5 * static_cast<double>(kk0 + kk1) * static_cast<double>(cnt);
+      sum_mu_ += (A * cnt + B * dt * sum_k) * inv;
+      sum_mu_signed_ += (As * cnt + Bs * dt * sum_k) * inv;
+      n_window_ += cnt;
+    }
   }
-  // Dynamic phase: the window sums over the samples at or after its start.
-  const double t_win = t_slip_ + cfg_.mu_d_skip_s;
-  long j0 = 0;
-  while (j0 < m && t_of(k0 + j0) < t_win) ++j0;
-  const long cnt = m - j0;
-  if (cnt > 0) {
-    // sum over k of t_k = dt * (sum of k), exact in integers up to 2^53.
-    const long kk0 = k0 + j0, kk1 = k0 + m - 1;
-    const double sum_k = 0.5 * static_cast<double>(kk0 + kk1) * static_cast<double>(cnt);
-    sum_mu_ += (A * cnt + B * dt * sum_k) * inv;
-    sum_mu_signed_ += (As * cnt + Bs * dt * sum_k) * inv;
-    n_window_ += cnt;
-  }
-  record_stretch(m);
-  last_t_ = t_of(k0 + m - 1);
+  // The series and the stress snapshots of the samples taken, from the same affine forces.
+  const long k_end = k0 + taken;
+  if (cfg_.keep_series)
+    for (long k = k0; k < k_end; ++k) series_.push_back({t_of(k), mu(k), mu_signed(k), n_sliding});
+  if (stress_due(t_of(k_end - 1)))  // a snapshot falls in the stretch (rare: no per-sample test)
+    for (long k = k0; k < k_end; ++k)
+      while (stress_due(t_of(k)))
+        add_snapshot(c, t_of(k), [&](int i) { return c.contact[i] ? a[i] + b[i] * t_of(k) : 0.0; });
+  last_t_ = t_of(k_end - 1);
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
-  return m;
+  return taken;
 }
 
 bool FrictionObserver::stress_due(double t) const {
