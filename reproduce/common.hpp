@@ -37,7 +37,9 @@ struct Options {
   std::string target;
   std::string tier = "paper";
   std::string out = ".";
-  std::string method = "event";  // as given; the document keeps it as method_requested
+  std::string method = "event";  // its name (normalised by make_context); the document also
+                                 // writes it as method_requested, kept for the output contract
+                                 // now that no method falls back to another
   int threads = 0;
   std::uint64_t seed = 1;
   std::string table;                // published_tab_pat*.tsv (table drivers)

@@ -45,6 +45,7 @@ mu_d).
 #include <nlohmann/json.hpp>
 
 #include "common.hpp"
+#include "springblock/scene_theory.hpp"
 #include "springblock/theory.hpp"
 
 namespace {
@@ -86,8 +87,7 @@ int main(int argc, char** argv) {
       },
       [](const repro::Context& ctx, nlohmann::json& doc) {
         sb::Scene s = ctx.chain(kN, kLength);
-        const auto d = s.derived();
-        const sb::theory::SingleBlock b{d.m_kg, d.K_s_N_per_m, s.material.v_m_per_s, d.F_load_N / kN};
+        const sb::theory::SingleBlock b = sb::theory::single_block(s);
         nlohmann::json r = nlohmann::json::array(), mu = r;
         for (int i = 5; i <= 100; ++i) {
           const double x = 0.01 * i;

@@ -28,10 +28,7 @@ struct Statistic {
 Statistic statistic(const Result& r, const sb::Observable& o) {
   std::vector<double> values;
   for (const auto& run : r.ensemble.runs) values.push_back(run.*o.value);
-  Statistic s{o.name, o.unit, r.ensemble.*o.statistic, array(values), ""};
-  const char* quantity = o.summary == Summary::Loading ? "mu_s" : o.summary == Summary::Window ? "mu_d" : nullptr;
-  if (quantity != nullptr) s.not_measured = sb::not_measured(r.scene, r.ensemble, quantity);
-  return s;
+  return {o.name, o.unit, r.ensemble.*o.statistic, array(values), sb::not_measured(r.scene, r.ensemble, o)};
 }
 
 // mu(t), its signed sum and the sliding count of repetition 0 (empty unless run(series=True)).
@@ -86,9 +83,9 @@ void bind_statistic(py::module_& m) {
 
 std::string result_repr(const Result& r) {
   std::string text = "springblock.Result(";
-  for (const char* name : {"mu_s", "mu_d"})
-    for (const auto& o : sb::observables())
-      if (std::string(o.name) == name) text += (text.back() == '(' ? "" : ", ") + statistic_repr(statistic(r, o));
+  for (const auto& o : sb::observables())
+    if (std::string(o.name) == "mu_s" || std::string(o.name) == "mu_d")
+      text += (text.back() == '(' ? "" : ", ") + statistic_repr(statistic(r, o));
   return text + ")";
 }
 

@@ -1,7 +1,6 @@
 // springblock.Scene: a validated scene built from field names and values exactly as a scene file
 // is (sb::apply_scene_json over the library's field table, then sb::validate), so Python accepts,
 // converts and refuses every field as the command line does, with the same defaults and messages.
-#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -13,20 +12,17 @@
 namespace sb::python {
 namespace {
 
-// The text the command line would be given for `value`: Python numbers as they print (360 ->
-// "360", 0.05 -> "0.05"; numpy scalars too), booleans as true/false, strings unchanged. Anything
-// else becomes null, which the scene-file check refuses naming the field.
+// `value` as a scene file would hold it, for apply_scene_json to turn into the command line's text
+// as it does for a scene file (a whole float such as 30.0 becomes "30", so a count such as N
+// accepts it). Integers go as text: apply_scene_json reads JSON integers as signed 64-bit, and a
+// seed may be any unsigned 64-bit value. Anything else becomes null, which that check refuses
+// naming the field.
 nlohmann::json field_text(const py::handle& value) {
-  if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
   if (py::isinstance<py::str>(value)) return value.cast<std::string>();
   if (PyIndex_Check(value.ptr())) return py::str(py::int_(py::reinterpret_borrow<py::object>(value))).cast<std::string>();
-  if (py::isinstance<py::float_>(value) || py::hasattr(value, "__float__")) {
-    // A whole float is written as a whole number (30.0 -> "30"), as a scene file's 30.0 is, so a
-    // count such as N accepts it; either text gives the same double to a quantity.
-    const py::float_ x(py::reinterpret_borrow<py::object>(value));
-    if (std::isfinite(x.cast<double>()) && x.attr("is_integer")().cast<bool>()) return py::str(py::int_(x)).cast<std::string>();
-    return py::repr(x).cast<std::string>();
-  }
+  if (py::isinstance<py::float_>(value) || py::hasattr(value, "__float__"))
+    return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
   return nullptr;
 }
 

@@ -61,7 +61,7 @@ void bind_theory(py::module_& m) {
   t.def("mu_d_macro_gaussian", &sb::theory::mu_d_macro_gaussian, py::arg("block"), py::arg("mean_s"),
         py::arg("sd_s"), py::arg("mean_d"), py::arg("sd_d"), py::arg("rel_tol") = 1e-9,
         "(mu_d)_M averaged over Gaussian micro coefficients (mu_d clipped to mu_s).");
-  t.def("single_block", [](const sb::Scene& s) { return sb::theory::predict(s).block; }, py::arg("scene"),
+  t.def("single_block", &sb::theory::single_block, py::arg("scene"),
         "The single block of a scene's K_int = 0 limit.");
   t.def("of_scene", [](const sb::Scene& s) { return to_python(nlohmann::json(sb::theory::predict(s))); },
         py::arg("scene"), "The prediction `springblock theory --json` prints for the scene, as a dict.");

@@ -2,6 +2,7 @@
 // The project's error types, in one header that depends on nothing else of the project, so that
 // any layer (parsers, scene, integrators, drivers) can throw them without pulling in the layer
 // that happens to parse units.
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -15,5 +16,12 @@ struct InputError : std::runtime_error {
   InputError(std::string field_, const std::string& message)
       : std::runtime_error(field_ + ": " + message), field(std::move(field_)) {}
 };
+
+// A number as an error message prints it (printf's %g): short, and the same everywhere.
+inline std::string printed(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
 
 }  // namespace sb

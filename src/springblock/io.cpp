@@ -89,13 +89,17 @@ namespace {
 // An observable's statistic; one over no repetitions has null mean, std and sem, and says why.
 nlohmann::json statistic_json(const Scene& scene, const EnsembleResult& r, const Observable& o) {
   nlohmann::json j = r.*o.statistic;
-  const char* quantity = o.summary == Summary::Loading ? "mu_s" : o.summary == Summary::Window ? "mu_d" : nullptr;
-  if (quantity)
-    if (const auto why = not_measured(scene, r, quantity); !why.empty()) j["not_measured"] = why;
+  if (const auto why = not_measured(scene, r, o); !why.empty()) j["not_measured"] = why;
   return j;
 }
 
 }  // namespace
+
+std::string not_measured(const Scene& scene, const EnsembleResult& r, const Observable& o) {
+  if (o.summary == Summary::Loading) return not_measured(scene, r, "mu_s");
+  if (o.summary == Summary::Window) return not_measured(scene, r, "mu_d");
+  return "";
+}
 
 nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const std::string& command_line) {
   nlohmann::json runs = nlohmann::json::array();

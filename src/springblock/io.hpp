@@ -23,6 +23,9 @@ void check_writable(const std::string& path, const std::string& field);
 // (`not_measured`) and the text output prints it in place of a number. `quantity` is "mu_s" or
 // "mu_d" (mu_d_signed shares mu_d's reason).
 std::string not_measured(const Scene& scene, const EnsembleResult& result, const std::string& quantity);
+// The same for an observable of observables.hpp: its reason is its summary kind's (the loading
+// phase's for Summary::Loading, the mu_d window's for Summary::Window), "" for the others.
+std::string not_measured(const Scene& scene, const EnsembleResult& result, const Observable& o);
 
 // Provenance: program version, commit, command line, UTC time, host threads.
 nlohmann::json provenance(const std::string& command_line);

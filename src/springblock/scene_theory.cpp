@@ -5,13 +5,15 @@
 
 namespace sb::theory {
 
-ScenePrediction predict(const Scene& scene) {
+SingleBlock single_block(const Scene& scene) {
   const auto d = scene.derived();
+  return {d.m_kg, d.K_s_N_per_m, scene.material.v_m_per_s, d.F_load_N / scene.geometry.N};
+}
+
+ScenePrediction predict(const Scene& scene) {
   const auto& f = scene.friction;
   ScenePrediction p;
-  // The single block of the K_int = 0 limit: one block's mass and slider spring, and its share
-  // of the load on a surface where every block is in contact.
-  p.block = {d.m_kg, d.K_s_N_per_m, scene.material.v_m_per_s, d.F_load_N / scene.geometry.N};
+  p.block = single_block(scene);
   p.mu_s = f.mu_s_mean;
   p.mu_d = std::min(f.mu_d_mean, f.mu_s_mean);
   p.mu_s_sd = f.mu_s_sd;

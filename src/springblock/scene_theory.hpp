@@ -17,6 +17,10 @@ struct ScenePrediction {
   double mu_d_macro_gaussian = 0;   // mu_d_macro averaged over those Gaussians
 };
 
+// The single block of the K_int = 0 limit: one block's mass and slider spring, and its share of
+// the load on a surface where every block is in contact. `scene` must be validated.
+SingleBlock single_block(const Scene& scene);
+
 // `scene` must be validated.
 ScenePrediction predict(const Scene& scene);
 

@@ -10,14 +10,8 @@
 namespace sb {
 namespace {
 
-std::string str(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
-
 void require(bool ok, const std::string& field, double value, const std::string& range) {
-  if (!ok) throw InputError(field, "value " + str(value) + " is outside the allowed range " + range);
+  if (!ok) throw InputError(field, "value " + printed(value) + " is outside the allowed range " + range);
 }
 
 bool finite(double x) { return std::isfinite(x); }
@@ -82,7 +76,7 @@ void validate_friction(const FrictionDistribution& f) {
   // mu_d = mu_s, keep raises the static threshold to mu_d (build_chain). Both leave a chain that
   // creeps at its thresholds with mu_d = mu_s, not the scene that was asked for, so it is refused.
   require(f.mu_d_mean <= f.mu_s_mean, "mu_d", f.mu_d_mean,
-          "[0, mu_s mean = " + str(f.mu_s_mean) +
+          "[0, mu_s mean = " + printed(f.mu_s_mean) +
               "] for the mean (kinetic friction above static friction has no stick-slip; "
               "mu_d = mu_s gives blocks that creep at their threshold)");
 }
@@ -106,15 +100,15 @@ void validate_rk4_step(const Scene& s) {
   const auto& r = s.run;
   const double h_max = rk4_stable_dt(s.derived());
   if (r.dt_s > h_max)
-    throw InputError("dt", "step " + str(r.dt_s) + " s exceeds the RK4 stability limit of this chain; "
-                           "the largest stable step is " + str(h_max) +
+    throw InputError("dt", "step " + printed(r.dt_s) + " s exceeds the RK4 stability limit of this chain; "
+                           "the largest stable step is " + printed(h_max) +
                            " s (h * omega_max <= 2 sqrt 2, omega_max = sqrt((K_s + 4 K_int)/m))");
   if (s.material.gamma_per_s > 0) {
     const double h_damped = rk4_damped_stable_dt(s.derived(), s.material.gamma_per_s);
     if (r.dt_s > h_damped)
-      throw InputError("dt", "step " + str(r.dt_s) + " s exceeds the RK4 stability limit with damping " +
-                                 str(s.material.gamma_per_s) + " /s; the largest stable step is " +
-                                 str(h_damped) + " s (overdamped modes need h * gamma <= 2.785)");
+      throw InputError("dt", "step " + printed(r.dt_s) + " s exceeds the RK4 stability limit with damping " +
+                                 printed(s.material.gamma_per_s) + " /s; the largest stable step is " +
+                                 printed(h_damped) + " s (overdamped modes need h * gamma <= 2.785)");
   }
   const double steps = s.duration() / r.dt_s;
   require(steps <= 1e13, "dt", r.dt_s, "a run of at most 1e13 steps (duration / dt)");
@@ -134,18 +128,18 @@ void validate_measurable(const Scene& s) {
           "mu_d_skip", s.rules.mu_d_skip_t0, "[0, 1000]");
   const double T = s.duration(), t0 = s.t0_s();
   if (r.stop_after_mu_s) {  // no mu_d window: one interval suffices
-    require(r.sample_dt_s <= T, "sample_dt", r.sample_dt_s, "(0, duration = " + str(T) + " s]");
+    require(r.sample_dt_s <= T, "sample_dt", r.sample_dt_s, "(0, duration = " + printed(T) + " s]");
   } else {
     require(2 * r.sample_dt_s <= T, "sample_dt", r.sample_dt_s,
-            "(0, duration / 2 = " + str(T / 2) + " s] (a sample at the first slip and one after it)");
+            "(0, duration / 2 = " + printed(T / 2) + " s] (a sample at the first slip and one after it)");
     require(s.rules.mu_d_skip_t0 * t0 < T - r.sample_dt_s, "mu_d_skip", s.rules.mu_d_skip_t0,
-            "[0, (duration - sample_dt) / t0 = " + str((T - r.sample_dt_s) / t0) +
+            "[0, (duration - sample_dt) / t0 = " + printed((T - r.sample_dt_s) / t0) +
                 ") in t0: the mu_d window must open before the end of the run (lower --mu-d-skip or "
                 "lengthen --duration)");
   }
   for (double t : s.observe.stress_times_s)
     require(finite(t) && t >= 0 && t <= s.duration(), "stress_times", t,
-            "[0, duration = " + str(s.duration()) + " s]");
+            "[0, duration = " + printed(s.duration()) + " s]");
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <system_error>
 
-#include "springblock/errors.hpp"  // InputError
+#include "springblock/errors.hpp"  // InputError, printed
 
 namespace sb {
 namespace {
@@ -148,12 +148,6 @@ void check_sizes_fit(const PatternSpec& spec, int N) {
     if (size > N)
       fail_plain("size " + std::to_string(size) + " in '" + spec.text() + "' exceeds the number of blocks N=" +
                  std::to_string(N) + "; allowed sizes are [1, " + std::to_string(N) + "]");
-}
-
-std::string printed(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
 }
 
 // Level 1 alternates over the whole chain; each finer level subdivides every maximal pawl run

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "springblock/ensemble.hpp"
+#include "springblock/scene_theory.hpp"
 #include "springblock/theory.hpp"
 
 using namespace sb;
@@ -31,8 +32,7 @@ TEST_P(KInt0, FollowsGaussianAveragedTheory) {
   validate(s);
   auto r = run_ensemble(s);
   ASSERT_EQ(r.mu_d.n, 4);
-  const auto d = s.derived();
-  theory::SingleBlock b{d.m_kg, d.K_s_N_per_m, s.material.v_m_per_s, d.F_load_N / s.geometry.N};
+  const theory::SingleBlock b = theory::single_block(s);
   const double expected = theory::mu_d_macro_gaussian(b, 1.0, 0.1, mu_d, 0.01);
   // Cycles in the window: window length / static-phase duration 2 (mu_s - mu_d) t0 / mu_s.
   const double window_t0 = 24 - 2 - 0.7;

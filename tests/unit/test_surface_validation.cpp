@@ -46,14 +46,4 @@ TEST(SurfaceValidation, LayoutLeavingNoContactIsRefused) {
   EXPECT_NE(msg.find("no block is left in contact"), std::string::npos) << msg;
 }
 
-TEST(SurfaceValidation, UncheckedMaskIsTheCheckedOne) {
-  for (const char* p : {"smooth", "periodic:3,2", "hierarchical:12,4,2", "random:0.4"}) {
-    Scene s;
-    set_scene_field(s, "N", "96");
-    set_scene_field(s, "pattern", p);
-    validate(s);
-    EXPECT_EQ(contact_mask(s.pattern, 96, 17), build_contact_mask(s.pattern, 96, 17)) << p;
-  }
-}
-
 }  // namespace
