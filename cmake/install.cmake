@@ -6,16 +6,35 @@
 include(CMakePackageConfigHelpers)
 
 # The public headers: the scene and its field table, the ensemble runner and its results, the
-# results JSON, units and errors, the closed-form theory, and every project header these include.
-# The integrator (integrate/**) is not among them: no public header includes it. A header added to
-# this closure must be added here; the consumer test compiles every installed header on its own
-# include path, so a missing one fails it.
-set(SPRINGBLOCK_PUBLIC_HEADERS
+# results JSON, units and errors, the closed-form theory, and every project header these include,
+# found by following their #include "springblock/..." lines (so a header newly included by a public
+# one is installed without anyone remembering to list it). The integrator (integrate/**) is not
+# among them: no public header includes it. The consumer test compiles every installed header on
+# its own include path, so a missing one fails it.
+set(SPRINGBLOCK_PUBLIC_ROOTS
     scene.hpp scene_fields.hpp ensemble.hpp observables.hpp io.hpp units.hpp errors.hpp theory.hpp
-    scene_theory.hpp
-    # included by the above
-    model.hpp chain_force.hpp kernel_clones.hpp parameters.hpp run_control.hpp surface.hpp state.hpp
-    observe/friction_observer.hpp observe/observer.hpp)
+    scene_theory.hpp)
+function(springblock_include_closure out)
+  set(todo ${ARGN})
+  set(seen "")
+  while(todo)
+    list(POP_FRONT todo header)
+    if(header IN_LIST seen)
+      continue()
+    endif()
+    list(APPEND seen ${header})
+    file(STRINGS ${PROJECT_SOURCE_DIR}/src/springblock/${header} lines REGEX "^#include \"springblock/")
+    foreach(line ${lines})
+      string(REGEX REPLACE "^#include \"springblock/([^\"]+)\".*" "\\1" included "${line}")
+      list(APPEND todo ${included})
+    endforeach()
+  endwhile()
+  set(${out} ${seen} PARENT_SCOPE)
+endfunction()
+springblock_include_closure(SPRINGBLOCK_PUBLIC_HEADERS ${SPRINGBLOCK_PUBLIC_ROOTS})
+if("integrate" IN_LIST SPRINGBLOCK_PUBLIC_HEADERS OR SPRINGBLOCK_PUBLIC_HEADERS MATCHES "integrate/")
+  message(FATAL_ERROR "a public header includes the integrator: ${SPRINGBLOCK_PUBLIC_HEADERS}")
+endif()
 foreach(header ${SPRINGBLOCK_PUBLIC_HEADERS})
   get_filename_component(subdir ${header} DIRECTORY)
   install(FILES ${PROJECT_SOURCE_DIR}/src/springblock/${header}

@@ -14,6 +14,7 @@
 #include "shell/interrupt.hpp"
 #include "shell/output.hpp"
 #include "shell/progress.hpp"
+#include "work_table.hpp"
 #include "springblock/ensemble.hpp"
 #include "springblock/errors.hpp"
 #include "springblock/io.hpp"
@@ -27,7 +28,7 @@ namespace shell = sb::shell;
 struct RunArgs {
   shell::FieldOptions fields;
   std::string scene_file, out_path, series_path;
-  bool json = false, progress = false;
+  bool json = false, progress = false, profile = false;
 };
 
 struct PatternArgs {
@@ -76,6 +77,7 @@ sb::Scene run_scene(const RunArgs& a, CLI::App* cmd) {
   sb::Scene scene = a.scene_file.empty() ? sb::Scene{} : load_scene_file(a.scene_file);
   a.fields.apply(scene);
   if (cmd->count("--series") > 0) scene.observe.series = true;
+  if (a.profile) scene.observe.timed_work = true;
   sb::validate(scene);
   if (cmd->count("--out") > 0) shell::claim_output(a.out_path, "out");
   if (cmd->count("--series") > 0) {
@@ -157,6 +159,8 @@ int cmd_run(const RunArgs& a, CLI::App* cmd, const std::string& command_line) {
     std::cout << j.dump() << "\n";
   else
     print_run_text(scene, result);
+  std::fflush(stdout);  // the table (stderr) after the results
+  if (a.profile) sb::app::print_work_table(result);
   return shell::kOk;
 }
 
@@ -201,6 +205,9 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& a) {
   run->add_flag("--json", a.json, "print one JSON object on stdout");
   run->add_option("--out", a.out_path, "write the full JSON results to this file (atomically)");
   run->add_option("--series", a.series_path, "write mu(t) and the sliding count of repetition 0 as TSV");
+  run->add_flag("--profile", a.profile,
+                "time each kind of work (stepping, event location, switching, quiet phases, sampling) and print "
+                "the table on stderr; the counts are always in the JSON's runs[].work");
   run->add_flag("--progress", a.progress, "show progress and ETA on stderr even when it is not a terminal");
   run->footer(
       "Exit codes: 0 results printed and written; 2 bad input, named with its allowed range (nothing is "

@@ -89,6 +89,7 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
   const auto wall0 = std::chrono::steady_clock::now();
   const Chain chain = build_chain(scene, rep);
   State state = State::at_rest(chain);
+  state.work.timed = scene.observe.timed_work;
   FrictionObserver obs(observer_config(scene, chain, rep, interrupt, progress_ns));
   auto integrator = make_integrator(scene.run);
   integrator->run(chain, state, scene.duration(), scene.run.sample_dt_s, obs);
@@ -97,6 +98,7 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
   r.steps = state.steps;
   r.rhs_evals = state.rhs_evals;
   r.switches = state.switches;
+  r.work = state.work;
   r.t_end_s = state.t;
   r.wall_s = seconds_since(wall0);
   return r;
@@ -114,6 +116,7 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
   const Scene& longest = *scenes.front();
   const Chain chain = build_chain(longest, rep);
   State state = State::at_rest(chain);
+  state.work.timed = longest.observe.timed_work;
   std::vector<FrictionObserver> observers;
   observers.reserve(scenes.size());
   std::vector<FanOut::View> views;
@@ -137,6 +140,7 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
     out.push_back(std::move(r));
   }
   out[0].wall_s = seconds_since(wall0);
+  out[0].work = state.work;  // like the wall time: the others' work is in this run
   return out;
 }
 
@@ -341,11 +345,22 @@ void to_json(nlohmann::json& j, const Statistic& s) {
   j = {{"mean", num(s.mean)}, {"std", num(s.std)}, {"sem", num(s.sem)}, {"n", s.n}};
 }
 
+void to_json(nlohmann::json& j, const WorkProfile& w) {
+  j = nlohmann::json::object();
+#define SB_COUNT(name, doc) j[#name] = w.name;
+  SB_WORK_COUNTS(SB_COUNT)
+#undef SB_COUNT
+  if (!w.timed) return;  // no times rather than zeros
+#define SB_TIME(name, doc) j[#name] = w.name;
+  SB_WORK_TIMES(SB_TIME)
+#undef SB_TIME
+}
+
 void to_json(nlohmann::json& j, const RunResult& r) {
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   j = {{"rep", r.rep},         {"slipped", r.slipped},     {"window_samples", r.window_samples},
        {"steps", r.steps},     {"rhs_evals", r.rhs_evals}, {"switches", r.switches},
-       {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}};
+       {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}, {"work", r.work}};
   for (const auto& o : observables()) j[o.name] = num(r.*o.value);
 }
 

@@ -12,6 +12,7 @@
 #include "springblock/observables.hpp"
 #include "springblock/observe/friction_observer.hpp"
 #include "springblock/scene.hpp"
+#include "springblock/work_profile.hpp"
 
 namespace sb {
 
@@ -25,6 +26,7 @@ struct RunResult {
 #undef SB_VALUE
   std::int64_t window_samples = 0;
   std::int64_t steps = 0, rhs_evals = 0, switches = 0;
+  WorkProfile work;  // where the work went (times only with scene.observe.timed_work)
   double t_end_s = 0;
   double wall_s = 0;
   double contact_fraction = 0;
@@ -91,6 +93,7 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes,
                                           const std::vector<double>& weights = {});
 
 void to_json(nlohmann::json& j, const Statistic& s);
+void to_json(nlohmann::json& j, const WorkProfile& w);
 void to_json(nlohmann::json& j, const RunResult& r);
 
 }  // namespace sb

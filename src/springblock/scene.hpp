@@ -18,6 +18,7 @@ namespace sb {
 struct Observables {
   bool series = false;                 // keep mu(t), n_sliding(t) of repetition 0
   std::vector<double> stress_times_s;  // per-block stress snapshots of repetition 0
+  bool timed_work = false;             // time each kind of work of every repetition (work_profile.hpp)
 };
 
 struct Scene {

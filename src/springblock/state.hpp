@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "springblock/model.hpp"
+#include "springblock/work_profile.hpp"
 
 namespace sb {
 
@@ -20,9 +21,11 @@ struct State {
   std::int64_t switches = 0;     // stick<->slip transitions
   std::vector<std::uint8_t> slipped_once;  // 1 once a contact block has started to slide
   int n_slipped_once = 0;                  // how many contact blocks have slid at least once
+  WorkProfile work;                        // where the run's work went (work_profile.hpp)
 
   // Called by integrators whenever block i starts to slide.
   void mark_slip(int i) {
+    ++work.slip_starts;
     if (!slipped_once[i]) {
       slipped_once[i] = 1;
       ++n_slipped_once;

@@ -33,6 +33,7 @@ template <bool Coupled, bool Damped>
 void EventRun::evolve_stepped() {
   const auto& spans = active_.stepped();
   if (!stage1_valid_) {
+    WorkTimer timer(s_.work, s_.work.stepping_s);
     dp_.first_stage<Coupled, Damped>(c_, spans, s_.u.data(), s_.v.data(), s_.t, sw_.mobile(), sw_.f_kin());
     ++s_.rhs_evals;
     stage1_valid_ = true;
@@ -40,6 +41,7 @@ void EventRun::evolve_stepped() {
   const auto crossing = active_.next_crossing();
   if (crossing.t <= s_.t) {
     if (crossing.recheck) {
+      WorkTimer timer(s_.work, s_.work.switching_s);
       active_.recheck(c_, s_);  // nothing switched: stage 1 stays valid
     } else {
       sw_.flag(crossing.block);
@@ -53,10 +55,15 @@ void EventRun::evolve_stepped() {
   const double h_try = control_.trial(s_.t, t_stop, clipped);
   const double err = attempt<Coupled, Damped>(spans, h_try);
   if (!StepControl::acceptable(err)) {
+    ++s_.work.rejected_steps;
     control_.rejected(h_try, err);
     return;
   }
-  const double theta = search_.locate(c_, s_, dp_, h_try, active_);
+  double theta;
+  {
+    WorkTimer timer(s_.work, s_.work.event_location_s);
+    theta = search_.locate(c_, s_, dp_, h_try, active_);
+  }
   if (theta <= 1.0) {
     step_to_event<Coupled, Damped>(spans, h_try * theta, theta == 1.0 && clipped, t_stop);
     // A closed-form crossing due at the same instant switches with them.
@@ -72,6 +79,7 @@ void EventRun::evolve_stepped() {
   ++s_.steps;
   control_.accepted(h_try, err, clipped);
   if (clipped && t_stop == crossing.t && crossing.recheck) {
+    WorkTimer timer(s_.work, s_.work.switching_s);
     active_.recheck(c_, s_);
   } else if (clipped && t_stop == crossing.t) {
     sw_.flag(crossing.block);
@@ -80,6 +88,7 @@ void EventRun::evolve_stepped() {
   } else {
     // Ringing grooves whose transient has died leave the stepped set (stage 1 of the others
     // stays valid: nothing switched).
+    WorkTimer timer(s_.work, s_.work.switching_s);
     active_.retire_settled(c_, s_);
   }
   sample_if_due();
@@ -87,6 +96,9 @@ void EventRun::evolve_stepped() {
 
 template <bool Coupled, bool Damped>
 double EventRun::attempt(const std::vector<BlockRange>& spans, double h) {
+  WorkTimer timer(s_.work, s_.work.stepping_s);
+  ++s_.work.stepped_attempts;
+  for (const auto& sp : spans) s_.work.block_steps += sp.hi - sp.lo;
   const double err = dp_.attempt<Coupled, Damped>(c_, spans, s_.u.data(), s_.v.data(), s_.t, h, sw_.mobile(),
                                                   sw_.f_kin(), control_.atol_u(), control_.atol_v(), control_.rtol());
   s_.rhs_evals += 6;
@@ -98,6 +110,7 @@ double EventRun::attempt(const std::vector<BlockRange>& spans, double h) {
 template <bool Coupled, bool Damped>
 void EventRun::step_to_event(const std::vector<BlockRange>& spans, double h_event, bool at_stop, double t_stop) {
   if (h_event > 0.0) {
+    ++s_.work.event_steps;
     attempt<Coupled, Damped>(spans, h_event);
     take_step_end(spans);
     s_.t = at_stop ? t_stop : s_.t + h_event;

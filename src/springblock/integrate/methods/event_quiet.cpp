@@ -10,26 +10,57 @@
 namespace sb::event_detail {
 
 bool EventRun::quiet_phase() {
-  quiet_->begin(c_, s_.t, s_.u.data(), s_.v.data());
-  const auto next = quiet_->next_threshold(c_, t_end_);
-  // Contact blocks do not move in a quiet phase: copy them once, update the grooves per sample.
-  if (clock_.next() < next.t) {
-    std::copy(s_.u.begin(), s_.u.end(), sample_.u.begin());
-    std::copy(s_.v.begin(), s_.v.end(), sample_.v.begin());
-    std::copy(s_.dir.begin(), s_.dir.end(), sample_.dir.begin());
+  // A quiet phase that follows sliding closes a slip event (the work profile's unit).
+  if (s_.work.slip_starts > slip_starts_seen_) ++s_.work.slip_events;
+  slip_starts_seen_ = s_.work.slip_starts;
+  QuietPhase::Next next;
+  {
+    WorkTimer timer(s_.work, s_.work.quiet_s);
+    quiet_->begin(c_, s_.t, s_.u.data(), s_.v.data());
+    next = quiet_->next_threshold(c_, t_end_);
   }
+  if (!serve_quiet_samples(next.t)) return false;
+  {
+    WorkTimer timer(s_.work, s_.work.quiet_s);
+    quiet_->evaluate(next.t, s_.u.data(), s_.v.data());
+  }
+  s_.t = next.t;
+  {
+    WorkTimer timer(s_.work, s_.work.switching_s);
+    ++s_.work.switch_instants;
+    if (next.block >= 0) sw_.flag(next.block);
+    if (sw_.apply(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
+    // Every groove is exact at s.t. Grooves settled before the quiet phase stay settled: their
+    // stuck ends have not moved, so their A + B t is still their path.
+    reclassify();
+  }
+  stage1_valid_ = false;
+  sample_if_due();
+  return true;
+}
+
+// The samples before t_next from the quiet phase's closed form; false when the observer stopped
+// the run at one of them (the state is then exact at that sample).
+bool EventRun::serve_quiet_samples(double t_next) {
+  if (!(clock_.next() < t_next)) return true;
+  WorkTimer timer(s_.work, s_.work.sampling_s);
+  // Contact blocks do not move in a quiet phase: copy them once, update the grooves per sample.
+  std::copy(s_.u.begin(), s_.u.end(), sample_.u.begin());
+  std::copy(s_.v.begin(), s_.v.end(), sample_.v.begin());
+  std::copy(s_.dir.begin(), s_.dir.end(), sample_.dir.begin());
   const double dead_after = quiet_->all_dead_after();
   affine_ready_ = false;
-  while (clock_.next() < next.t) {
+  while (clock_.next() < t_next) {
     if (clock_.next() >= dead_after) {
       bool stopped = false;
-      if (sample_affine_stretch(next.t, stopped)) {
+      if (sample_affine_stretch(t_next, stopped)) {
         if (stopped) return false;
         continue;
       }
     }
     sample_.t = clock_.next();
     quiet_->sample(sample_.t, sample_.u.data(), sample_.v.data(), ends_only_);
+    ++s_.work.samples;
     stamp_sample();
     obs_.sample(c_, sample_);
     clock_.advance();
@@ -39,15 +70,6 @@ bool EventRun::quiet_phase() {
       return false;
     }
   }
-  quiet_->evaluate(next.t, s_.u.data(), s_.v.data());
-  s_.t = next.t;
-  if (next.block >= 0) sw_.flag(next.block);
-  if (sw_.apply(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
-  // Every groove is exact at s.t. Grooves settled before the quiet phase stay settled: their
-  // stuck ends have not moved, so their A + B t is still their path.
-  reclassify();
-  stage1_valid_ = false;
-  sample_if_due();
   return true;
 }
 
@@ -63,6 +85,7 @@ bool EventRun::sample_affine_stretch(double t_next, bool& stopped) {
   const long used = obs_.sample_affine(c_, sample_, static_cast<long>(k0), clock_.dt(), static_cast<long>(k_end - k0),
                                        fa_.data(), fb_.data());
   if (used <= 0) return false;
+  s_.work.stretch_samples += used;
   clock_.advance(used);
   if (obs_.wants_stop()) {
     const double t_last = clock_.time_of(clock_.index() - 1);

@@ -45,6 +45,8 @@ void EventRun::reclassify() {
 // the whole state. (Not after settling: that would overwrite the v = 0 of the blocks that just
 // stopped.)
 void EventRun::switch_now() {
+  WorkTimer timer(s_.work, s_.work.switching_s);
+  ++s_.work.switch_instants;
   if (static_cast<std::size_t>(sw_.n_sliding()) <= sw_.flagged().size())
     active_.materialise(s_.t, s_.u.data(), s_.v.data());
   else
@@ -62,6 +64,8 @@ void EventRun::take_step_end(const std::vector<BlockRange>& spans) {
 
 void EventRun::sample_if_due() {
   if (!clock_.due(s_.t)) return;
+  WorkTimer timer(s_.work, s_.work.sampling_s);
+  ++s_.work.samples;
   active_.materialise(s_.t, s_.u.data(), s_.v.data(), true, ends_only_);
   obs_.sample(c_, s_);
   clock_.advance();
@@ -82,9 +86,11 @@ void EventRun::jump_exact() {
   if (t_stop > s_.t) {
     s_.t = t_stop;
     ++s_.steps;  // one exact step (State::steps counts accepted steps, of any kind)
+    ++s_.work.exact_jumps;
   }
   if (next.t <= s_.t) {
     if (next.recheck) {
+      WorkTimer timer(s_.work, s_.work.switching_s);
       active_.recheck(c_, s_);
     } else {
       sw_.flag(next.block);

@@ -10,6 +10,7 @@
 // The switching rules (events/switching.hpp), the classification of runs and their exact
 // events (events/active_set.hpp), and the exact propagators (linear/) are the pieces the
 // evolve layer combines; when an observation is due comes from the shared SampleSchedule.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -47,6 +48,7 @@ class EventRun {
   // Evolve: a quiet phase, exact to its first threshold crossing (event_quiet.cpp). Returns
   // false when the observer stopped the run inside it.
   bool quiet_phase();
+  bool serve_quiet_samples(double t_next);
   // Evolve: nothing to step (every mobile run is exact): jump to the next event or sample.
   void jump_exact();
   // Evolve: one trial step of the stepped runs, to its end or to the first event inside it.
@@ -89,6 +91,7 @@ class EventRun {
   std::vector<double> fa_, fb_;   // affine contact forces a + b t once a quiet phase's modes died
   bool affine_ready_ = false;
   bool stage1_valid_ = false;
+  std::int64_t slip_starts_seen_ = 0;  // s.work.slip_starts at the last quiet phase
 };
 
 }  // namespace sb::event_detail

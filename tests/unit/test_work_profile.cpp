@@ -1,0 +1,97 @@
+// The work profile (work_profile.hpp) must be true to the run it describes and must not touch it:
+// timing the kinds of work changes no result to the last bit; the counters agree with the run's
+// own counts (every sample accounted for, a slip start for every slide, steps that add up); the
+// times are all there when asked for and add up to no more than the repetition's wall time, and
+// are absent from the JSON when not asked for.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "springblock/ensemble.hpp"
+#include "springblock/scene_fields.hpp"
+
+using namespace sb;
+
+namespace {
+
+Scene base(const std::string& pattern) {
+  Scene s;
+  set_scene_field(s, "N", "48");
+  set_scene_field(s, "length", "0.96cm");
+  set_scene_field(s, "pattern", pattern);
+  set_scene_field(s, "duration", "2t0");
+  s.reps = 2;
+  s.seed = 11;
+  s.threads = 1;
+  return s;
+}
+
+void expect_timing_changes_nothing(const Scene& plain) {
+  Scene timed = plain;
+  timed.observe.timed_work = true;
+  const auto a = run_ensemble(plain), b = run_ensemble(timed);
+  ASSERT_EQ(a.runs.size(), b.runs.size());
+  for (std::size_t r = 0; r < a.runs.size(); ++r) {
+    EXPECT_EQ(a.runs[r].mu_s, b.runs[r].mu_s) << r;
+    EXPECT_EQ(a.runs[r].mu_d, b.runs[r].mu_d) << r;
+    EXPECT_EQ(a.runs[r].steps, b.runs[r].steps) << r;
+    EXPECT_EQ(a.runs[r].switches, b.runs[r].switches) << r;
+#define SB_SAME(name, doc) EXPECT_EQ(a.runs[r].work.name, b.runs[r].work.name) << #name;
+    SB_WORK_COUNTS(SB_SAME)
+#undef SB_SAME
+  }
+}
+
+// Counts that must hold on any event run.
+void expect_consistent_counts(const Scene& sc) {
+  Scene timed = sc;
+  timed.observe.timed_work = true;
+  const auto res = run_ensemble(timed);
+  for (const auto& r : res.runs) {
+    const WorkProfile& w = r.work;
+    // Every sample time in (0, t_end] is served once, one by one or in a stretch (the sample at
+    // t = 0 is the run's start, not counted).
+    const auto expected = static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
+    EXPECT_EQ(w.samples + w.stretch_samples, expected);
+    // A switch is a start or a stop, and a block stops only after it started.
+    EXPECT_GT(w.slip_starts, 0);
+    EXPECT_GE(r.switches, w.slip_starts);
+    EXPECT_LE(r.switches, 2 * w.slip_starts);
+    EXPECT_GT(w.slip_events, 0);
+    EXPECT_LE(w.slip_events, w.slip_starts);
+    // Accepted steps of any kind: the trial steps kept (neither rejected nor followed by a redo
+    // to an event), the redone event steps and the exact jumps.
+    EXPECT_LE(r.steps, w.stepped_attempts - w.rejected_steps + w.exact_jumps);
+    EXPECT_GE(r.steps, w.event_steps + w.exact_jumps);
+    EXPECT_LE(w.rejected_steps + w.event_steps, w.stepped_attempts);
+    EXPECT_GE(w.block_steps, w.stepped_attempts);  // a trial integrates at least one block
+    ASSERT_TRUE(w.timed);
+    double sum = 0;
+#define SB_SUM(name, doc) EXPECT_GE(w.name, 0.0) << #name, sum += w.name;
+    SB_WORK_TIMES(SB_SUM)
+#undef SB_SUM
+    EXPECT_GT(w.stepping_s, 0.0);
+    EXPECT_LE(sum, r.wall_s);
+  }
+}
+
+}  // namespace
+
+TEST(WorkProfile, TimingChangesNothingWithGrooves) { expect_timing_changes_nothing(base("periodic:3,3")); }
+TEST(WorkProfile, TimingChangesNothingSmooth) { expect_timing_changes_nothing(base("smooth")); }
+TEST(WorkProfile, CountsAddUpWithGrooves) { expect_consistent_counts(base("periodic:3,3")); }
+TEST(WorkProfile, CountsAddUpSmooth) { expect_consistent_counts(base("smooth")); }
+
+TEST(WorkProfile, JsonHasTimesOnlyWhenTimed) {
+  Scene plain = base("periodic:3,3");
+  plain.reps = 1;
+  Scene timed = plain;
+  timed.observe.timed_work = true;
+  const nlohmann::json a = run_ensemble(plain).runs[0], b = run_ensemble(timed).runs[0];
+  EXPECT_TRUE(a.at("work").contains("slip_starts"));
+  EXPECT_FALSE(a.at("work").contains("stepping_s"));
+  EXPECT_TRUE(b.at("work").contains("stepping_s"));
+  EXPECT_GT(b.at("work").at("slip_starts").get<long long>(), 0);
+}
