@@ -11,16 +11,20 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
   // At theta = 1 the continuous extension is the step's end point: read it, do not evaluate it.
   const double* u1 = dp.u1();
   const double* v1 = dp.v1();
+  // Every watched block is screened at theta = 1/2: the stepped blocks' continuous extension
+  // there is evaluated once, span by span (a vector loop), not block by block.
+  dp.dense_spans(active.stepped(), 0.5, um_.data(), vm_.data());
   auto nb_u = [&](int j, double th) {
     switch (active.kind(j)) {
-      case ActiveSet::kStepped: return th == 1.0 ? u1[j] : dp.dense_u(j, th);
+      case ActiveSet::kStepped: return th == 1.0 ? u1[j] : th == 0.5 ? um_[j] : dp.dense_u(j, th);
       case ActiveSet::kSettled: return active.settled_u(j, t + th * h);
       case ActiveSet::kModal: return active.modal_u(j, t + th * h);
       default: return s.u[j];  // a stuck neighbour does not move
     }
   };
   auto g = [&](int i, double th) {
-    if (s.dir[i] != 0) return s.dir[i] * (th == 1.0 ? v1[i] : dp.dense_v(i, th));
+    if (s.dir[i] != 0)
+      return s.dir[i] * (th == 1.0 ? v1[i] : th == 0.5 && active.kind(i) == ActiveSet::kStepped ? vm_[i] : dp.dense_v(i, th));
     // Stuck: v_i = 0 (no damping force) and u_i does not move.
     double F = c.K_s * (c.v_slider * (t + th * h) - s.u[i]);
     if (i > 0) F += c.K_int * (nb_u(i - 1, th) - s.u[i]);
