@@ -281,7 +281,8 @@ def write_atomic(path, text):
 def load(path):
     """A document written by this tool; a missing field is named."""
     try:
-        doc = json.load(open(path))
+        with open(path) as f:
+            doc = json.load(f)
     except (OSError, ValueError) as e:
         raise BadInput(f"--from: cannot read {path}: {e}")
     for key in ("machine", "reps", "scenes", "fit", "verdict"):
@@ -321,7 +322,9 @@ def main(argv=None):
             print(a.out, file=sys.stderr)
         b = block(doc)
         if a.write:
-            write_atomic(a.readme, replace(open(a.readme).read(), b))
+            with open(a.readme) as f:
+                text = f.read()
+            write_atomic(a.readme, replace(text, b))
         if a.print:
             print(b)
     except BadInput as e:
