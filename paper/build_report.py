@@ -477,6 +477,29 @@ def figure_block(figs, name):
     return ("img", str(png) if png.is_file() else None, f"{name}: figures/{name}.py")
 
 
+def cost_model_blocks(path):
+    """The cost model (tools/cost_model.py, run by make bench): the fit, the verdict and each
+    scene's measured time against the model and its floor, read from its document."""
+    B = [("h", 3, "Cost model")]
+    doc = load_json(path)
+    if doc is None:
+        return B + [("p", f"not measured: run make bench ({path} missing).")]
+    f, v, m = doc["fit"], doc["verdict"], doc["machine"]
+    terms = ", ".join(f"{c:.3g} µs per {t}" for t, c in f["coefficients_us"].items())
+    B.append(("p", f"Wall time of one repetition fitted on the calibration scenes ({f['form']} form, commit "
+                   f"{m['commit']}, {m['date']}, {m['cores']} cores): {terms}. Validation: {v['within']} of "
+                   f"{v['of']} scenes within a factor of {v['factor']:g} (needed {v['needed']}): "
+                   f"**{'met' if v['met'] else 'not met'}**. The floor is the Dormand-Prince stepping (stepping_s)."))
+    rows = [[s["name"], s["set"], f"{s['counts']['slip_events']:.0f}", f"{s['counts']['slip_starts']:.0f}",
+             f"{1e3 * s['measured_s']:.1f}", f"{1e3 * s['predicted_s']:.1f}",
+             f"{s['ratio']:.2f}" if s["ratio"] is not None else "-", "yes" if s["within"] else "no",
+             f"{s['over_floor']:.1f}" if s["over_floor"] is not None else "-"]
+            for s in sorted(doc["scenes"], key=lambda s: (s["set"] != "validation", s["name"]))]
+    B.append(("table", ["scene", "set", "slip events", "episodes", "measured ms", "predicted ms",
+                        "measured/predicted", f"within {v['factor']:g}x", "measured/floor"], rows))
+    return B
+
+
 # ---------------------------------------------------------------- the document
 
 def build(data, figs, s):
@@ -534,6 +557,9 @@ def build(data, figs, s):
         B.append(figure_block(figs, "accuracy_cost"))
         B.append(("table", ["study", "setting", "error against the reference", "wall s", "rhs evaluations"],
                   accuracy_rows(docs["accuracy_cost"])))
+
+    # make bench writes the cost model next to the reproduction's results: build/bench.
+    B += cost_model_blocks(data.parent / "bench" / "cost_model.json")
 
     B += report_studies.study_blocks(data, figs)
 
