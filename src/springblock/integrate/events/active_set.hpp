@@ -64,6 +64,9 @@ class ActiveSet {
   double settled_u(int i, double t) const { return paths_.u(i, t); }
   // Displacement of a block in a modal run at time t.
   double modal_u(int i, double t) const { return modal_.u(i, t); }
+  // Its affine path and a bound on its deviation from it (ModalRuns::amplitude).
+  double modal_affine_u(int i, double t) const { return modal_.affine_u(i, t); }
+  double modal_amplitude(int i) const { return modal_.amplitude(i); }
 
   // Write the settled and modal runs' exact u, v at time t into u, v (at_sample: t is a sample
   // time; ends_only: grooves-only modal runs write their end rows only, see

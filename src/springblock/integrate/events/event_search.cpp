@@ -31,11 +31,30 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
     if (i + 1 < N) F += c.K_int * (nb_u(i + 1, th) - s.u[i]);
     return c.f_static[i] - std::fabs(F);
   };
+  // A stuck block beside a modal run: if |F| stays below f_static with that run's end anywhere
+  // within its modal envelope, g > 0 whatever the modes do, so the screen below would find no
+  // event and the modes (an exp and a sincos each) need not be evaluated. The margin covers the
+  // round-off of the direct evaluation, so the outcome is the screen's to the last bit.
+  auto surely_no_event = [&](int i, double th) {
+    double F = c.K_s * (c.v_slider * (t + th * h) - s.u[i]), spread = 0, scale = std::fabs(F);
+    for (int j : {i - 1, i + 1}) {
+      if (j < 0 || j >= N) continue;
+      const bool modal = active.kind(j) == ActiveSet::kModal;
+      const double d = c.K_int * ((modal ? active.modal_affine_u(j, t + th * h) : nb_u(j, th)) - s.u[i]);
+      F += d, scale += std::fabs(d);
+      if (modal) spread += c.K_int * active.modal_amplitude(j);
+    }
+    return std::fabs(F) + spread + 1e-12 * (scale + spread) < c.f_static[i] * (1.0 - 1e-9);
+  };
+  auto beside_modal = [&](int i) {
+    return (i > 0 && active.kind(i - 1) == ActiveSet::kModal) || (i + 1 < N && active.kind(i + 1) == ActiveSet::kModal);
+  };
   const std::vector<int>& watched = active.watched();
   double best = 2.0;
   for (std::size_t k = 0; k < watched.size(); ++k) {
     const int i = watched[k];
     theta_[k] = 2.0;
+    if (s.dir[i] == 0 && beside_modal(i) && surely_no_event(i, 0.5) && surely_no_event(i, 1.0)) continue;
     double lo = 0, hi = 2.0;
     if (g(i, 0.5) <= 0) hi = 0.5;
     else if (g(i, 1.0) <= 0) lo = 0.5, hi = 1.0;

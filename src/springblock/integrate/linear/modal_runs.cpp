@@ -29,6 +29,7 @@ ModalRuns::ModalRuns(const Chain& c)
       run_of_(c.N, -1),
       A_(c.N),
       B_(c.N),
+      amp_(c.N, std::numeric_limits<double>::infinity()),
       q0_(c.N),
       p0_(c.N),
       acc0_(c.N),
@@ -103,6 +104,7 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     p0_[lo + k] = pk;
     acc0_[lo + k] = -c.gamma * pk - b.run->modes[k].omega2 * qk;
   }
+  set_end_amplitudes(*b.run, lo, hi);
   Run run{lo, hi, &b, s.t, s.t, 0, false, true, grooves};
   if (grooves) run.settled_after = s.t + transient_envelope(*b.run, q0_.data() + lo, p0_.data() + lo).time_below(eps_u_, eps_v_settle_);
   if (old >= 0 && runs_[old].lo == lo && !runs_[old].live) {
@@ -113,6 +115,22 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     runs_.push_back(run);
   }
   return true;
+}
+
+// Each mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it), so from the
+// projection on |q_k| <= sqrt(p0^2 + omega^2 q0^2) / omega, and an end row's deviation from its
+// affine path is at most sum_k |Q(row, k)| times that. Interior rows are not bounded (+inf).
+void ModalRuns::set_end_amplitudes(const RunBasis& b, int lo, int hi) {
+  const int n = hi - lo;
+  for (int i = lo; i < hi; ++i) amp_[i] = std::numeric_limits<double>::infinity();
+  for (int row : {0, n - 1}) {
+    double a = 0;
+    for (int k = 0; k < n; ++k) {
+      const double w2 = b.modes[k].omega2, q = q0_[lo + k], p = p0_[lo + k];
+      a += std::fabs(b.Q(row, k)) * std::sqrt((p * p + w2 * q * q) / w2);
+    }
+    amp_[lo + row] = a;
+  }
 }
 
 void ModalRuns::end() {

@@ -67,6 +67,11 @@ class ModalRuns {
   int run_start(int i) const { return runs_[run_of_[i]].lo; }
   // Exact u (and v) of a block in a modal run at time t (direct evaluation).
   double u(int i, double t) const;
+  // The same as its affine path A + B t and a bound on the modes' part, |u - (A + B t)| <=
+  // amplitude(i) at every t after the projection (finite for a run's end rows only): enough to
+  // decide that a stuck neighbour is far from its threshold without evaluating the modes.
+  double affine_u(int i, double t) const { return A_[i] + B_[i] * t; }
+  double amplitude(int i) const { return amp_[i]; }
   // Write every modal run's exact u, v at t. at_sample: t is a sample time, so the modal
   // coordinates may be advanced by the sample recurrence and kept as its new start. ends_only:
   // a grooves-only run writes only its two end rows (the ones a contact block's force reads),
@@ -114,6 +119,7 @@ class ModalRuns {
   void rows(const Run& r, double t, const double* q, const double* qd, int r0, int r1, int dr, double* u,
             double* v) const;
   const Basis& basis(int n, bool left, bool right);
+  void set_end_amplitudes(const RunBasis& b, int lo, int hi);
   // Modal coordinates of run r at time t into q, qd (per mode, indices lo.. of the flat arrays).
   void coords(const Run& r, double t, double* q, double* qd) const;
 
@@ -126,6 +132,7 @@ class ModalRuns {
   std::vector<Run> runs_;
   std::vector<int> run_of_;                  // block -> index in runs_ (-1: not in a modal run)
   std::vector<double> A_, B_;                // per block: particular solution
+  std::vector<double> amp_;                  // per block: bound on the modes' part (end rows)
   std::vector<double> q0_, p0_, acc0_;       // per mode slot: q, q', q'' at the run's t0
   std::vector<double> qc_, qdc_;             // per mode slot: sample cursor
   std::vector<double> cq_, cp_;              // per mode slot: scratch coordinates at s.t
