@@ -4,24 +4,23 @@ mu_s against the converged event reference): error against wall time (a) and aga
 right-hand-side evaluations (b), log-log, one line per integration method. RHS evaluations are
 machine independent; wall time is what a user pays. The reference's own convergence (tol 1e-11
 against 1e-12) is drawn as a horizontal line: errors below it are not resolved. Settings that
-failed are named in the legend, not dropped. Data: accuracy_cost.json, block `work_precision`."""
+failed are named in the legend, not dropped. (c): cost of the event method per simulated second
+against the number of blocks N at the paper's block size, log-log, one line per surface with the
+power law fitted by the driver (exponent and its standard error in the legend). Data:
+accuracy_cost.json, blocks `work_precision` and `scaling`."""
 import style
 
-a = style.arguments(__doc__)
-doc = style.load_target(a.data, "accuracy_cost")
-fig, (pa, pb) = style.plt.subplots(1, 2, figsize=(7.0, 3.3), sharey=True)
-pa.set_title("(a)", loc="left")
-pb.set_title("(b)", loc="left")
-# RK4 below the paper's step is the optional study rk4_refinement: drawn with the same method's
-# points (same scenes, seeds and reference), its commit named in the stamp.
-extra = style.load_study(a.data, "rk4_refinement")
-rows = [r for d in (doc, extra) for r in (d or {}).get("work_precision", [])
-        if r.get("study") == "first_peak" and not (d is extra and (r.get("reference") or r.get("reference_check")))]
-failed = [f for f in (doc or {}).get("failed", []) if f.get("study") == "first_peak"]
-if not rows:
-    style.not_produced(pa, "accuracy_cost")
-    style.not_produced(pb, "accuracy_cost")
-else:
+
+def work_precision_panels(pa, pb, doc, extra):
+    # RK4 below the paper's step is the optional study rk4_refinement: drawn with the same method's
+    # points (same scenes, seeds and reference), its commit named in the stamp.
+    rows = [r for d in (doc, extra) for r in (d or {}).get("work_precision", [])
+            if r.get("study") == "first_peak" and not (d is extra and (r.get("reference") or r.get("reference_check")))]
+    failed = [f for f in (doc or {}).get("failed", []) if f.get("study") == "first_peak"]
+    if not rows:
+        style.not_produced(pa, "accuracy_cost")
+        style.not_produced(pb, "accuracy_cost")
+        return
     floor = [r["error"] for r in rows if r.get("reference_check")]
     methods = sorted({r["method"] for r in rows} | {f["setting"].split()[0] for f in failed})
     for i, m in enumerate(methods):
@@ -49,8 +48,54 @@ else:
     pb.set_xlabel("right-hand-side evaluations")
     pa.set_ylabel(r"max over seeds |error| of first-peak $(\mu_s)_M$")
     pa.legend(fontsize=6)
+
+
+def fit_label(pattern, fit):
+    b, se = fit.get("exponent"), fit.get("exponent_se")
+    if b is None:
+        return f"{pattern} (no fit)"
+    return f"{pattern}: $N^{{{b:.2f} \\pm {se:.2f}}}$" if se is not None else f"{pattern}: $N^{{{b:.2f}}}$"
+
+
+def scaling_panel(ax, doc):
+    block = (doc or {}).get("scaling")
+    if not block or not block.get("surfaces"):
+        style.not_produced(ax, "accuracy_cost (scaling)")
+        return
+    for i, s in enumerate(block["surfaces"]):
+        c = style.COLOURS[i % len(style.COLOURS)]
+        pts = [p for p in s["points"] if p.get("wall_s_per_simulated_s") and "excluded" not in p]
+        if not pts:
+            continue
+        n = [p["N"] for p in pts]
+        ax.plot(n, [p["wall_s_per_simulated_s"] for p in pts], "o", color=c, ms=4, label=fit_label(s["pattern"], s["fit"]))
+        f = s["fit"]
+        if f.get("exponent") is not None:
+            ax.plot([min(n), max(n)], [f["prefactor"] * x ** f["exponent"] for x in (min(n), max(n))], "-", color=c, lw=1)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("blocks N (block size fixed, L_x = N x 0.2 mm)")
+    ax.set_ylabel("wall s per simulated s")
+    reps = f"{block['reps']} repetition" + ("" if block["reps"] == 1 else "s")
+    ax.set_title(f"(c) event method, tol {block['tol']:g}, {block['duration_s']:g} s simulated, {reps} per point",
+                 loc="left")
+    ax.legend(fontsize=6, title="fitted cost", title_fontsize=6)
+
+
+a = style.arguments(__doc__)
+doc = style.load_target(a.data, "accuracy_cost")
+fig = style.plt.figure(figsize=(7.0, 6.4))
+grid = fig.add_gridspec(2, 2)
+pa = fig.add_subplot(grid[0, 0])
+pb = fig.add_subplot(grid[0, 1], sharey=pa)
+pc = fig.add_subplot(grid[1, :])
+pa.set_title("(a)", loc="left")
+pb.set_title("(b)", loc="left")
+extra = style.load_study(a.data, "rk4_refinement")
+work_precision_panels(pa, pb, doc, extra)
+scaling_panel(pc, doc)
 fig.tight_layout(rect=(0, 0.03, 1, 1))
-note = "first macroscopic peak, N = 360, periodic:10,10"
+note = "(a, b) first macroscopic peak, N = 360, periodic:10,10"
 if extra:
     note += f"; RK4 h < 1e-7 s from rk4_refinement at {extra['provenance']['commit']}"
 style.stamp(fig, __file__, doc, note)

@@ -472,6 +472,34 @@ def accuracy_rows(doc):
     return rows
 
 
+def scaling_blocks(doc):
+    """The driver's scaling block: a sentence with each surface's fitted exponent (read from the
+    document, never typed) and one row per surface and N."""
+    sc = doc.get("scaling")
+    if not sc:
+        return [("p", "Scaling with N: not in this accuracy_cost.json (older driver).")]
+
+    def exponent(fit):
+        if fit.get("exponent") is None:
+            return "no fit"
+        se = fit.get("exponent_se")
+        return f"N^{fit['exponent']:.2f}" + (f" ± {se:.2f}" if se is not None else "")
+
+    fits = "; ".join(f"{s['pattern']} {exponent(s['fit'])} (switches per simulated second "
+                     f"{exponent(s['fit_switches'])})" for s in sc["surfaces"])
+    text = (f"Scaling with N (panel c): the event method at tol {sc['tol']:g}, chains of N blocks at a fixed block "
+            f"size of {1e3 * sc['block_size_m']:g} mm, {sc['duration_s']:g} s simulated, {sc['reps']} "
+            f"repetition{'' if sc['reps'] == 1 else 's'} per point. Wall time per simulated second, least-squares power law in N (exponent ± standard error): "
+            f"{fits}. Wall times are those of each repetition on its thread of the target's pool, so they carry "
+            f"the machine's load at the time.")
+    rows = [[s["pattern"], str(p["N"]), f"{p['wall_s']:.3f}", f"{p['simulated_s']:g}", f"{p['switches']:.0f}",
+             f"{p['steps']:.0f}", f"{p['rhs_evals']:.3g}",
+             "-" if p.get("wall_s_per_simulated_s") is None else f"{p['wall_s_per_simulated_s']:.3g}"]
+            for s in sc["surfaces"] for p in s["points"]]
+    return [("p", text), ("table", ["surface", "N", "wall s", "simulated s", "switches", "steps", "rhs evaluations",
+                                    "wall s per simulated s"], rows)]
+
+
 def figure_block(figs, name):
     png = figs / f"{name}.png"
     return ("img", str(png) if png.is_file() else None, f"{name}: figures/{name}.py")
@@ -557,6 +585,7 @@ def build(data, figs, s):
         B.append(figure_block(figs, "accuracy_cost"))
         B.append(("table", ["study", "setting", "error against the reference", "wall s", "rhs evaluations"],
                   accuracy_rows(docs["accuracy_cost"])))
+        B += scaling_blocks(docs["accuracy_cost"])
 
     # make bench writes the cost model next to the reproduction's results: build/bench.
     B += cost_model_blocks(data.parent / "bench" / "cost_model.json")
