@@ -16,14 +16,14 @@
 
 #include "springblock/errors.hpp"
 
-#ifndef SPRINGBLOCK_COMMIT
-#define SPRINGBLOCK_COMMIT "unknown"
-#endif
 #ifndef SPRINGBLOCK_VERSION
 #define SPRINGBLOCK_VERSION "0"
 #endif
 
 namespace sb {
+
+// The commit this library was built from (generated at build time, src/CMakeLists.txt).
+const char* build_commit();
 
 void write_file_atomic(const std::string& path, const std::string& content) {
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
@@ -78,7 +78,7 @@ nlohmann::json provenance(const std::string& command_line) {
   std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
   return {{"program", "springblock"},
           {"version", SPRINGBLOCK_VERSION},
-          {"commit", SPRINGBLOCK_COMMIT},
+          {"commit", build_commit()},
           {"command", command_line},
           {"utc", stamp},
           {"hardware_threads", std::thread::hardware_concurrency()}};
