@@ -64,18 +64,18 @@ def scaling_panel(ax, doc):
         return
     for i, s in enumerate(block["surfaces"]):
         c = style.COLOURS[i % len(style.COLOURS)]
-        pts = [p for p in s["points"] if p.get("wall_s_per_simulated_s") and "excluded" not in p]
+        pts = [p for p in s["points"] if p.get("cpu_s_per_simulated_s") and "excluded" not in p]
         if not pts:
             continue
         n = [p["N"] for p in pts]
-        ax.plot(n, [p["wall_s_per_simulated_s"] for p in pts], "o", color=c, ms=4, label=fit_label(s["pattern"], s["fit"]))
+        ax.plot(n, [p["cpu_s_per_simulated_s"] for p in pts], "o", color=c, ms=4, label=fit_label(s["pattern"], s["fit"]))
         f = s["fit"]
         if f.get("exponent") is not None:
             ax.plot([min(n), max(n)], [f["prefactor"] * x ** f["exponent"] for x in (min(n), max(n))], "-", color=c, lw=1)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("blocks N (block size fixed, L_x = N x 0.2 mm)")
-    ax.set_ylabel("wall s per simulated s")
+    ax.set_ylabel("CPU s per simulated s")
     reps = f"{block['reps']} repetition" + ("" if block["reps"] == 1 else "s")
     ax.set_title(f"(c) event method, tol {block['tol']:g}, {block['duration_s']:g} s simulated, {reps} per point",
                  loc="left")

@@ -84,23 +84,25 @@ nlohmann::json fit_json(const Fit& f) {
 }
 
 // One point from a scene's repetitions: their work summed. A scene observed on another's
-// simulation (trajectory_from) has no wall time of its own, so it is no point of the fit.
+// simulation (trajectory_from) has no time of its own, so it is no point of the fit. The cost is
+// CPU time (RunResult::cpu_s): the wall time of a repetition is stretched by whatever else loads
+// the machine, its thread's CPU time much less.
 nlohmann::json point(const nlohmann::json& scene) {
-  double wall = 0, sim = 0, switches = 0, steps = 0, rhs = 0;
+  double cpu = 0, sim = 0, switches = 0, steps = 0, rhs = 0;
   for (const auto& r : scene["result"]["runs"]) {
-    wall += r["wall_s"].get<double>(), sim += r["t_end_s"].get<double>();
+    cpu += r["cpu_s"].get<double>(), sim += r["t_end_s"].get<double>();
     switches += r["switches"].get<double>(), steps += r["steps"].get<double>(), rhs += r["rhs_evals"].get<double>();
   }
   nlohmann::json p = {{"N", scene["x"]["N"]},
                       {"L_x_m", scene["x"]["L_x_m"]},
                       {"id", scene["id"]},
                       {"reps", scene["result"]["runs"].size()},
-                      {"wall_s", wall},
+                      {"cpu_s", cpu},
                       {"simulated_s", sim},
                       {"switches", switches},
                       {"steps", steps},
                       {"rhs_evals", rhs},
-                      {"wall_s_per_simulated_s", sim > 0 ? num(wall / sim) : nullptr},
+                      {"cpu_s_per_simulated_s", sim > 0 ? num(cpu / sim) : nullptr},
                       {"switches_per_simulated_s", sim > 0 ? num(switches / sim) : nullptr}};
   if (scene.contains("trajectory_from")) p["excluded"] = "observed on " + scene["trajectory_from"].get<std::string>();
   return p;
@@ -116,9 +118,9 @@ nlohmann::json surface_block(const std::string& pattern, const nlohmann::json& s
   std::vector<double> n, cost, rate;
   for (auto& [N, p] : by_N) {
     points.push_back(p);
-    if (p.contains("excluded") || p["wall_s_per_simulated_s"].is_null()) continue;
+    if (p.contains("excluded") || p["cpu_s_per_simulated_s"].is_null()) continue;
     n.push_back(N);
-    cost.push_back(p["wall_s_per_simulated_s"].get<double>());
+    cost.push_back(p["cpu_s_per_simulated_s"].get<double>());
     rate.push_back(p["switches_per_simulated_s"].get<double>());
   }
   return {{"pattern", pattern},
@@ -157,7 +159,7 @@ void cost_scaling_finish(const Context& ctx, nlohmann::json& doc) {
                     {"block_size_m", kBlockSizeUm / 1e6},
                     {"duration_s", kDurationS},
                     {"reps", kReps},
-                    {"cost", "wall_s_per_simulated_s: each repetition's wall time on its own thread of the "
+                    {"cost", "cpu_s_per_simulated_s: each repetition's CPU time on its own thread of the "
                              "target's pool, over its simulated time"},
                     {"surfaces", surfaces}};
 }

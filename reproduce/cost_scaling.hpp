@@ -15,8 +15,8 @@ namespace repro {
 // paper's 7.2 cm for 360 blocks), a fixed simulated time, x.study = "scaling".
 std::vector<LabelledScene> cost_scaling_plan(const Context& ctx);
 
-// The document's "scaling" block: per surface, per N the wall time, simulated seconds, switches,
-// steps, rhs evaluations and wall seconds per simulated second; and the least-squares fit of
+// The document's "scaling" block: per surface, per N the CPU time, simulated seconds, switches,
+// steps, rhs evaluations and CPU seconds per simulated second; and the least-squares fit of
 // log(cost) against log(N) with the exponent's standard error.
 void cost_scaling_finish(const Context& ctx, nlohmann::json& doc);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <condition_variable>
 #include <exception>
@@ -82,11 +83,19 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// CPU seconds used by the calling thread so far (a repetition runs on one thread).
+double thread_cpu_s() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 }  // namespace
 
 RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* interrupt,
                          std::atomic<std::int64_t>* progress_ns) {
   const auto wall0 = std::chrono::steady_clock::now();
+  const double cpu0 = thread_cpu_s();
   const Chain chain = build_chain(scene, rep);
   State state = State::at_rest(chain);
   state.work.timed = scene.observe.timed_work;
@@ -101,6 +110,7 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
   r.work = state.work;
   r.t_end_s = state.t;
   r.wall_s = seconds_since(wall0);
+  r.cpu_s = thread_cpu_s() - cpu0;
   return r;
 }
 
@@ -113,6 +123,7 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
                                              const std::atomic<bool>* interrupt,
                                              std::atomic<std::int64_t>* progress_ns) {
   const auto wall0 = std::chrono::steady_clock::now();
+  const double cpu0 = thread_cpu_s();
   const Scene& longest = *scenes.front();
   const Chain chain = build_chain(longest, rep);
   State state = State::at_rest(chain);
@@ -140,6 +151,7 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
     out.push_back(std::move(r));
   }
   out[0].wall_s = seconds_since(wall0);
+  out[0].cpu_s = thread_cpu_s() - cpu0;
   out[0].work = state.work;  // like the wall time: the others' work is in this run
   return out;
 }
@@ -360,7 +372,7 @@ void to_json(nlohmann::json& j, const RunResult& r) {
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   j = {{"rep", r.rep},         {"slipped", r.slipped},     {"window_samples", r.window_samples},
        {"steps", r.steps},     {"rhs_evals", r.rhs_evals}, {"switches", r.switches},
-       {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}, {"work", r.work}};
+       {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}, {"cpu_s", r.cpu_s}, {"work", r.work}};
   for (const auto& o : observables()) j[o.name] = num(r.*o.value);
 }
 

@@ -29,6 +29,9 @@ struct RunResult {
   WorkProfile work;  // where the work went (times only with scene.observe.timed_work)
   double t_end_s = 0;
   double wall_s = 0;
+  // CPU time of the thread that ran it: unlike the wall time, not stretched by other load on the
+  // machine (what the cost-against-N study fits).
+  double cpu_s = 0;
   double contact_fraction = 0;
   std::vector<Sample> series;            // repetition 0 only, when asked
   std::vector<StressSnapshot> stress;    // repetition 0 only, when asked
