@@ -37,7 +37,7 @@ EventRun::EventRun(const Chain& c, State& s, double t_end, double sample_dt, Obs
 void EventRun::reclassify() {
   active_.rebuild(c_, s_, sw_.touched());
   sw_.clear_touched();
-  dp_.set_frozen(s_.u.data());
+  dp_.set_frozen(s_.u.data(), active_.stepped());
 }
 
 // Only the exact runs the switch reads or re-projects are brought to s.t first, unless the

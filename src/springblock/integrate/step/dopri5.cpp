@@ -12,9 +12,11 @@ Dopri5::Dopri5(int N) : N_(N), store_(14 * static_cast<std::size_t>(N)), ut_(N),
   for (int s = 0; s < 14; ++s) k_[s] = store_.data() + static_cast<std::size_t>(s) * N;
 }
 
-void Dopri5::set_frozen(const double* u) {
-  std::copy(u, u + N_, ut_.begin());
-  std::copy(u, u + N_, u1_.begin());  // stage 7 reads the neighbours' positions from u1
+void Dopri5::set_frozen(const double* u, const std::vector<BlockRange>& spans) {
+  // Only the borders: copying the whole chain twice at every switch was O(N) per switch.
+  for (const BlockRange& sp : spans)
+    for (int i : {sp.lo - 1, sp.hi})
+      if (i >= 0 && i < N_) ut_[i] = u1_[i] = u[i];  // stage 7 reads the neighbours from u1
 }
 
 void Dopri5::accept_fsal() {

@@ -42,9 +42,10 @@ class Dopri5 {
  public:
   explicit Dopri5(int N);
 
-  // Copy the current positions into the trial array, so that blocks outside the spans (stuck
-  // ones in particular) read as constant to the stages. Call after every switch.
-  void set_frozen(const double* u);
+  // Copy the current positions of the blocks bordering the spans into the trial arrays, so that
+  // they read as constant to the stages (the stages read no other block outside the spans).
+  // Call after every switch, with the new spans.
+  void set_frozen(const double* u, const std::vector<BlockRange>& spans);
 
   // Stage 1 at (u, v, t). Needed at the start and after every switch (the right-hand side jumps).
   template <bool Coupled, bool Damped>
