@@ -75,22 +75,11 @@ bool check_same_trajectory() {
         const State init = active_state(c);
         const State a = run_once({N, p, e, false}, c, init, scene.run.dt_s);
         const State b = run_once({N, p, e, true}, c, init, scene.run.dt_s);
-        // Deviations in units of the starting amplitude and the velocity it implies (a chain that
-        // came to rest would make max|v| a meaningless scale).
-        const double u_scale = kAmplitude, v_scale = kAmplitude * std::sqrt(c.K_s / c.m);
-        double du = 0, dv = 0;
-        int dir_mismatch = 0;
-        for (int i = 0; i < N; ++i) {
-          du = std::max(du, std::fabs(a.u[i] - b.u[i]));
-          dv = std::max(dv, std::fabs(a.v[i] - b.v[i]));
-          dir_mismatch += a.dir[i] != b.dir[i];
-        }
-        const double rel_u = du / u_scale, rel_v = dv / v_scale;
-        const bool same = rel_u < 1e-9 && rel_v < 1e-9 && dir_mismatch == 0 && a.steps == b.steps &&
-                          a.switches == b.switches;
+        const StateDeviation d = deviation(c, a, b);
+        const bool same = d.roundoff() && a.steps == b.steps && a.switches == b.switches;
         std::printf("check %-20s N=%d %-12s max|du|/A = %.1e  max|dv|/(A w_s) = %.1e  "
                     "dir mismatches %d  switches %lld/%lld  steps %lld %s\n",
-                    p, N, e.name, rel_u, rel_v, dir_mismatch, static_cast<long long>(a.switches),
+                    p, N, e.name, d.rel_u, d.rel_v, d.dir_mismatch, static_cast<long long>(a.switches),
                     static_cast<long long>(b.switches), static_cast<long long>(a.steps), same ? "ok" : "DIFFERENT");
         ok = ok && same;
       }

@@ -1,5 +1,6 @@
 #pragma once
 // Scenes and starting states shared by the benchmark binaries.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -47,6 +48,26 @@ inline State active_state(const Chain& c) {
   const double k = 2.0 * 3.14159265358979 * 3.0 / c.N;
   for (int i = 0; i < c.N; ++i) s.u[i] = kAmplitude * std::sin(k * (i + 0.5));
   return s;
+}
+
+// How far two runs from the active state ended apart: the largest |du| and |dv| in units of the
+// starting amplitude and the velocity it implies (a chain that came to rest would make max|v| a
+// meaningless scale), and how many blocks differ in phase. Two codes of one physics agree to
+// round-off (below 1e-9) with no phase mismatch.
+struct StateDeviation {
+  double rel_u = 0, rel_v = 0;
+  int dir_mismatch = 0;
+  bool roundoff() const { return rel_u < 1e-9 && rel_v < 1e-9 && dir_mismatch == 0; }
+};
+inline StateDeviation deviation(const Chain& c, const State& a, const State& b) {
+  const double u_scale = kAmplitude, v_scale = kAmplitude * std::sqrt(c.K_s / c.m);
+  StateDeviation d;
+  for (int i = 0; i < c.N; ++i) {
+    d.rel_u = std::max(d.rel_u, std::fabs(a.u[i] - b.u[i]) / u_scale);
+    d.rel_v = std::max(d.rel_v, std::fabs(a.v[i] - b.v[i]) / v_scale);
+    d.dir_mismatch += a.dir[i] != b.dir[i];
+  }
+  return d;
 }
 
 class NullObserver final : public Observer {

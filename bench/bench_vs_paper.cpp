@@ -102,20 +102,11 @@ bool check_same_physics() {
     NaiveRk4(h).run(c, b, t_end);
     // Step counts may differ: on a smooth chain that came to rest sb::Rk4 jumps the quiet
     // phase, which the paper's method steps through. The state at t_end may not.
-    // Deviations in units of the starting amplitude and the velocity it implies.
-    const double u_scale = kAmplitude, v_scale = kAmplitude * std::sqrt(c.K_s / c.m);
-    double du = 0, dv = 0;
-    int dir_mismatch = 0;
-    for (int i = 0; i < c.N; ++i) {
-      du = std::max(du, std::fabs(a.u[i] - b.u[i]));
-      dv = std::max(dv, std::fabs(a.v[i] - b.v[i]));
-      dir_mismatch += a.dir[i] != b.dir[i];
-    }
-    const bool same = du / u_scale < 1e-9 && dv / v_scale < 1e-9 && dir_mismatch == 0 && a.switches == b.switches &&
-                      a.switches > 0;
+    const StateDeviation d = deviation(c, a, b);
+    const bool same = d.roundoff() && a.switches == b.switches && a.switches > 0;
     std::printf("check %-16s %lld steps from the active state: max|du|/A %.1e, max|dv|/(A w_s) %.1e, "
                 "dir mismatches %d, switches %lld/%lld, steps %lld/%lld %s\n",
-                p, static_cast<long long>(kCheckSteps), du / u_scale, dv / v_scale, dir_mismatch,
+                p, static_cast<long long>(kCheckSteps), d.rel_u, d.rel_v, d.dir_mismatch,
                 static_cast<long long>(a.switches), static_cast<long long>(b.switches), static_cast<long long>(a.steps),
                 static_cast<long long>(b.steps), same ? "ok" : "DIFFERENT");
     ok = ok && same;

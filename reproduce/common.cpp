@@ -54,7 +54,7 @@ nlohmann::json definition_without_seed(nlohmann::json j) {
   return j;
 }
 
-nlohmann::json num(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+using sb::json_number;
 
 nlohmann::json scene_record(const LabelledScene& ls, const sb::EnsembleResult& r, const std::string& cmd) {
   nlohmann::json result = sb::ensemble_json(ls.scene, r, cmd);
@@ -69,7 +69,7 @@ nlohmann::json scene_record(const LabelledScene& ls, const sb::EnsembleResult& r
     nlohmann::json t = nlohmann::json::array(), mu = t, mus = t, ns = t;
     for (std::size_t i = 0; i < run0.series.size(); i += stride) {
       const auto& s = run0.series[i];
-      t.push_back(s.t), mu.push_back(num(s.mu)), mus.push_back(num(s.mu_signed)), ns.push_back(s.n_sliding);
+      t.push_back(s.t), mu.push_back(json_number(s.mu)), mus.push_back(json_number(s.mu_signed)), ns.push_back(s.n_sliding);
     }
     rec["series"] = {{"t_s", t}, {"mu", mu}, {"mu_signed", mus}, {"n_sliding", ns}, {"stride", stride}};
   }

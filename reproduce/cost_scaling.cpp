@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "springblock/ensemble.hpp"
+
 namespace repro {
 namespace {
 
@@ -76,10 +78,12 @@ Fit power_law(const std::vector<double>& x, const std::vector<double>& y) {
   return f;
 }
 
-nlohmann::json num(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+using sb::json_number;
 
 nlohmann::json fit_json(const Fit& f) {
-  return {{"exponent", num(f.exponent)}, {"exponent_se", num(f.exponent_se)}, {"prefactor", num(f.prefactor)},
+  return {{"exponent", json_number(f.exponent)},
+          {"exponent_se", json_number(f.exponent_se)},
+          {"prefactor", json_number(f.prefactor)},
           {"n_points", f.n}};
 }
 
@@ -102,8 +106,8 @@ nlohmann::json point(const nlohmann::json& scene) {
                       {"switches", switches},
                       {"steps", steps},
                       {"rhs_evals", rhs},
-                      {"cpu_s_per_simulated_s", sim > 0 ? num(cpu / sim) : nullptr},
-                      {"switches_per_simulated_s", sim > 0 ? num(switches / sim) : nullptr}};
+                      {"cpu_s_per_simulated_s", sim > 0 ? json_number(cpu / sim) : nullptr},
+                      {"switches_per_simulated_s", sim > 0 ? json_number(switches / sim) : nullptr}};
   if (scene.contains("trajectory_from")) p["excluded"] = "observed on " + scene["trajectory_from"].get<std::string>();
   return p;
 }

@@ -22,6 +22,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import summary_schema as schema  # noqa: E402
+from generated_block import write_atomic  # noqa: E402
 from reproduction.inputs import published_rows  # noqa: E402
 
 SECTION = "## What is reproduced, and how well"
@@ -134,9 +135,7 @@ def main():
     want = block(s, published_rows(a.tables))
     i, j = current_block(text)
     if a.write:
-        with open(a.readme + ".tmp", "w") as f:
-            f.write(text[:i] + want + text[j:])
-        os.replace(a.readme + ".tmp", a.readme)
+        write_atomic(a.readme, text[:i] + want + text[j:])
         print(f"{a.readme}: results block written from {a.summary}")
         return 0
     status = 0

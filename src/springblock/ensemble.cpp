@@ -352,9 +352,10 @@ EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interru
   return std::move(run_ensembles({scene}, interrupt, std::move(progress)).front());
 }
 
+nlohmann::json json_number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
 void to_json(nlohmann::json& j, const Statistic& s) {
-  auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  j = {{"mean", num(s.mean)}, {"std", num(s.std)}, {"sem", num(s.sem)}, {"n", s.n}};
+  j = {{"mean", json_number(s.mean)}, {"std", json_number(s.std)}, {"sem", json_number(s.sem)}, {"n", s.n}};
 }
 
 void to_json(nlohmann::json& j, const WorkProfile& w) {
@@ -369,11 +370,10 @@ void to_json(nlohmann::json& j, const WorkProfile& w) {
 }
 
 void to_json(nlohmann::json& j, const RunResult& r) {
-  auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   j = {{"rep", r.rep},         {"slipped", r.slipped},     {"window_samples", r.window_samples},
        {"steps", r.steps},     {"rhs_evals", r.rhs_evals}, {"switches", r.switches},
        {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}, {"cpu_s", r.cpu_s}, {"work", r.work}};
-  for (const auto& o : observables()) j[o.name] = num(r.*o.value);
+  for (const auto& o : observables()) j[o.name] = json_number(r.*o.value);
 }
 
 }  // namespace sb

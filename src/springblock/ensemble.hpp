@@ -95,6 +95,8 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes,
                                           std::function<void(double fraction, double elapsed_s)> progress = {},
                                           const std::vector<double>& weights = {});
 
+// A number for the results JSON: null where it is not finite (never a NaN in a results file).
+nlohmann::json json_number(double x);
 void to_json(nlohmann::json& j, const Statistic& s);
 void to_json(nlohmann::json& j, const WorkProfile& w);
 void to_json(nlohmann::json& j, const RunResult& r);

@@ -67,6 +67,8 @@ class ActiveSet {
   // Its affine path and a bound on its deviation from it (ModalRuns::amplitude).
   double modal_affine_u(int i, double t) const { return modal_.affine_u(i, t); }
   double modal_amplitude(int i) const { return modal_.amplitude(i); }
+  // Block i has a modal run beside it (K_int > 0).
+  bool beside_modal(int i) const;
 
   // Write the settled and modal runs' exact u, v at time t into u, v (at_sample: t is a sample
   // time; ends_only: grooves-only modal runs write their end rows only, see
@@ -120,7 +122,6 @@ class ActiveSet {
   // The event time of stuck block i when it needs no modal search (watched: none here;
   // otherwise closed form). Returns false if it borders a modal run (search it instead).
   bool refresh_stuck(const Chain& c, const State& s, int i);
-  bool beside_modal(int i) const;
   bool any_modal() const { return modal_max_ > 0 || modal_max_groove_ > 0; }
   // Modal event search of block i up to limit (stop if sliding, threshold crossing if stuck).
   void search_modal(const Chain& c, const State& s, int i, double limit);

@@ -19,7 +19,7 @@ namespace sb::event_detail {
 
 class EventSearch {
  public:
-  explicit EventSearch(int N) : theta_(N), um_(N), vm_(N) { hits_.reserve(N); }
+  explicit EventSearch(int N) : theta_(N) { hits_.reserve(N); }
 
   // Earliest event fraction theta in [0, 1] of the step [s.t, s.t + h], or a value > 1 if none.
   // hits() then lists the blocks whose events lie within `window` (fraction) of it, in order.
@@ -29,7 +29,6 @@ class EventSearch {
 
  private:
   std::vector<double> theta_;
-  std::vector<double> um_, vm_;  // the stepped blocks' continuous extension at theta = 1/2
   std::vector<int> hits_;
 };
 

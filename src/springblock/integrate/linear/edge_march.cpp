@@ -1,5 +1,4 @@
 #include "springblock/integrate/linear/edge_march.hpp"
-#include "springblock/integrate/root_bracket.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -128,12 +127,30 @@ double EdgeMarch::envelope_skip(double aff, double mb, double fs) const {
   return inside ? affine_reach(aff, b_, room) : 0.0;
 }
 
-// Shrink a bracket with gap g = fs - measure(F) > 0 at lo and <= 0 at hi to round-off in t
-// (root_bracket.hpp); returns the crossed end.
+// Shrink a bracket with gap g = fs - measure(F) > 0 at lo and <= 0 at hi to round-off in t;
+// returns the crossed end. Regula falsi with the Illinois modification (the retained end's gap
+// is halved when the same end is kept twice), falling back to bisection whenever the secant
+// point is not well inside: the bracket is kept at every iteration, and a smooth gap needs ~10
+// direct evaluations instead of ~50 for plain bisection.
 double EdgeMarch::refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                          double ghi) {
-  return refine_bracket([&](double tau) { return fs - measure(force(q0, p0, tau)); }, lo, glo, hi, ghi,
-                        [&](double a, double b) { return !(b - a > 4e-16 * std::fabs(t0 + b)); }, 200);
+  int kept = 0;  // +1: lo kept last time, -1: hi kept last time
+  for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(t0 + hi); ++it) {
+    double mid = hi - ghi * (hi - lo) / (ghi - glo);
+    const double w = hi - lo;
+    if (!(mid > lo + 1e-3 * w && mid < hi - 1e-3 * w)) mid = 0.5 * (lo + hi);
+    const double gm = fs - measure(force(q0, p0, mid));
+    if (gm > 0) {
+      lo = mid, glo = gm;
+      if (kept == -1) ghi *= 0.5;
+      kept = -1;
+    } else {
+      hi = mid, ghi = gm;
+      if (kept == 1) glo *= 0.5;
+      kept = 1;
+    }
+  }
+  return hi;
 }
 
 double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0) {

@@ -1,7 +1,8 @@
 #pragma once
 // How long a run's transient lasts: a bound, from the modal coordinates at the start, on every
 // row's deviation from the affine path. Written once for the quiet phase (when groove modes stop
-// changing a double, or a sample) and the modal runs (when a groove run has settled).
+// changing a double, or a sample) and the modal runs (when a groove run has settled); and a
+// bound, for any damping, on one row's deviation at every later time (row_deviation_bound).
 //
 // An underdamped mode (s = omega^2 - alpha^2 > 0, w = sqrt(s)) from (q0, p0) is
 //   q = e^{-alpha tau} (q0 cos w tau + (P / w) sin w tau),  P = p0 + alpha q0,
@@ -44,6 +45,18 @@ inline TransientEnvelope transient_envelope(const RunBasis& b, const double* q0,
   }
   e.decays = b.n() > 0;
   return e;
+}
+
+// Each mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it, whatever its
+// strength), so |q_k| <= sqrt(p0^2 + omega^2 q0^2) / omega at every time after the start, and row
+// r of the run deviates from its affine path by at most sum_k |Q_rk| times that.
+inline double row_deviation_bound(const RunBasis& b, int row, const double* q0, const double* p0) {
+  double a = 0;
+  for (int k = 0; k < b.n(); ++k) {
+    const double w2 = b.modes[k].omega2;
+    a += std::fabs(b.Q(row, k)) * std::sqrt((p0[k] * p0[k] + w2 * q0[k] * q0[k]) / w2);
+  }
+  return a;
 }
 
 }  // namespace sb::event_detail

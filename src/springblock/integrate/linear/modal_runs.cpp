@@ -117,20 +117,10 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
   return true;
 }
 
-// Each mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it), so from the
-// projection on |q_k| <= sqrt(p0^2 + omega^2 q0^2) / omega, and an end row's deviation from its
-// affine path is at most sum_k |Q(row, k)| times that. Interior rows are not bounded (+inf).
+// The end rows' bounds from the projection (envelope.hpp); interior rows are not bounded (+inf).
 void ModalRuns::set_end_amplitudes(const RunBasis& b, int lo, int hi) {
-  const int n = hi - lo;
   for (int i = lo; i < hi; ++i) amp_[i] = std::numeric_limits<double>::infinity();
-  for (int row : {0, n - 1}) {
-    double a = 0;
-    for (int k = 0; k < n; ++k) {
-      const double w2 = b.modes[k].omega2, q = q0_[lo + k], p = p0_[lo + k];
-      a += std::fabs(b.Q(row, k)) * std::sqrt((p * p + w2 * q * q) / w2);
-    }
-    amp_[lo + row] = a;
-  }
+  for (int row : {0, hi - lo - 1}) amp_[lo + row] = row_deviation_bound(b, row, q0_.data() + lo, p0_.data() + lo);
 }
 
 void ModalRuns::end() {

@@ -64,9 +64,6 @@ class Dopri5 {
   // The continuous extension of the last attempted step at theta in [0, 1].
   double dense_u(int i, double theta) const { return dense(u0_, u1_.data(), 0, i, theta); }
   double dense_v(int i, double theta) const { return dense(v0_, k_[6], 7, i, theta); }
-  // The same for every block of the spans at one theta, into u[i], v[i] (a vector loop per span;
-  // equal to dense_u / dense_v to the last bit: one formula, no contraction).
-  void dense_spans(const std::vector<BlockRange>& spans, double theta, double* u, double* v) const;
 
   const double* u1() const { return u1_.data(); }
   // The new velocities are stage 7's velocity slope (c7 = 1, a7 = b): stored once, as k_[6].

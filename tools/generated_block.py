@@ -1,0 +1,31 @@
+"""Generated text in hand-written files, and files written whole or not at all: shared by the
+tools that write the README's generated blocks (readme_cost.py, readme_results.py,
+cost_model.py)."""
+import os
+import tempfile
+
+
+def replace_block(text, begin, end, new_block):
+    """text with everything from the marker begin to the marker end (both included) replaced by
+    new_block, which carries the markers itself. ValueError when the markers are missing or out
+    of order, so a README without them is never rewritten."""
+    i, j = text.find(begin), text.find(end)
+    if i < 0 or j < i:
+        raise ValueError(f"markers not found: {begin!r} ... {end!r}")
+    return text[:i] + new_block + text[j + len(end):]
+
+
+def write_atomic(path, text):
+    """Write text to path through a temporary file in the same directory and a rename: a reader
+    sees the old file or the new one, never a part."""
+    d = os.path.dirname(os.path.abspath(path))
+    os.makedirs(d, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=d, prefix="." + os.path.basename(path))
+    try:
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
+        os.chmod(tmp, 0o644)  # mkstemp makes it private; these files are meant to be shared
+        os.replace(tmp, path)
+    except BaseException:
+        os.unlink(tmp)
+        raise
