@@ -22,7 +22,7 @@ struct DesignArgs {
   shell::FieldOptions fields;
   design::Query query;
   std::string family = "periodic", target_mu_s, target_mu_d, target_ratio, minimise, maximise, out_path;
-  bool json = false, progress = false;
+  bool json = false, progress = false, no_class_prune = false;
 };
 
 namespace {
@@ -64,6 +64,9 @@ void add_search_options(CLI::App* cmd, design::Query& q) {
   cmd->add_option("--growth", q.search.growth, "successive halving: repetitions multiplied per rung (default 2)");
   cmd->add_option("--max-reps", q.search.max_reps, "successive halving: repetitions cap per candidate (default 16)");
   cmd->add_option("--final-pool", q.search.final_pool, "successive halving: stop at this many survivors (default 15)");
+  cmd->add_option("--class-width", q.classes.bin_width, "mu_d target: width of the contact-fraction classes (default 0.02)");
+  cmd->add_option("--class-margin", q.classes.margin, "mu_d target: prune a class whose mu_d is this far from the target (default 0.02)");
+
 }
 
 design::Quantity parse_quantity_name(const std::string& field, const std::string& text) {
@@ -76,6 +79,7 @@ design::Quantity parse_quantity_name(const std::string& field, const std::string
 // The query of the command line, validated; the --out file claimed. Bad input throws first.
 design::Query build_query(const DesignArgs& a, CLI::App* cmd) {
   design::Query q = a.query;
+  q.class_prune = !a.no_class_prune;
   a.fields.apply(q.base);
   q.base.pattern.kind = SurfaceKind::Smooth;  // validated as smooth; every candidate sets its own
   validate(q.base);
@@ -139,6 +143,7 @@ DesignCommand::DesignCommand(CLI::App& app) : args_(std::make_unique<DesignArgs>
   add_space_options(cmd_, args_->query.space, args_->family);
   add_target_options(cmd_, *args_);
   add_search_options(cmd_, args_->query);
+  cmd_->add_flag("--no-class-prune", args_->no_class_prune, "mu_d target: do not prune on contact-fraction classes");
   cmd_->add_flag("--json", args_->json, "print one JSON object on stdout");
   cmd_->add_option("--out", args_->out_path, "write the full JSON results to this file (atomically)");
   cmd_->add_flag("--progress", args_->progress, "show progress and ETA on stderr even when it is not a terminal");

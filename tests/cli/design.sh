@@ -93,5 +93,25 @@ for p in sys.argv[1:]:
     json.load(open(p), parse_constant=refuse)
 PY
 
+# 5. A mu_d interval prunes contact-fraction classes; the prune must not drop a surface that meets
+# the target when nothing is pruned (the premise: mu_d is set by the contact fraction).
+md=(--target-mu-s 0.6:0.75 --target-mu-d ">=0.56" --seed 3 --threads 2 --json)
+"$sb" design "${chain[@]}" "${space[@]}" "${md[@]}" >"$dir/pruned.json" || { echo "FAIL mu_d query"; fail=1; }
+"$sb" design "${chain[@]}" "${space[@]}" "${md[@]}" --no-class-prune >"$dir/unpruned.json" || fail=1
+"$py" - "$dir/pruned.json" "$dir/unpruned.json" <<'PY' || fail=1
+import json, sys
+pruned, unpruned = (json.load(open(p)) for p in sys.argv[1:])
+classes = pruned["search"]["contact_classes"]
+assert classes is not None and unpruned["search"]["contact_classes"] is None
+dropped = [(c["contact_lo"], c["contact_hi"]) for c in classes["classes"] if not c["kept"]]
+assert dropped, "nothing pruned: the check below would be empty"
+for b in unpruned["best"]:
+    if b["meets_target"]:
+        f = b["contact_fraction"]
+        assert not any(lo <= f < hi for lo, hi in dropped), f"{b['pattern']} meets the target but its class was pruned"
+print(f"class prune: {classes['candidates_pruned']} candidates in {len(dropped)} classes pruned; "
+      f"feasible pruned {pruned['feasible']}, unpruned {unpruned['feasible']}")
+PY
+
 [ $fail -eq 0 ] && echo "design: known target found, infeasible reported, bad bounds refused, thread-independent"
 exit $fail

@@ -1,4 +1,5 @@
 // infeasible_reason (report.hpp): why a target was not met, from what the search measured.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -43,6 +44,19 @@ std::string out_of_reach(const Outcome& o, Quantity q, const Interval& in) {
 std::string excluded(const Query& q, const Outcome& o) {
   const auto& c = o.candidates;
   std::string s;
+  if (o.classes_used) {
+    int pruned = 0;
+    double lo = 1e300, hi = -1e300;
+    for (const auto& k : o.classes.classes) {
+      if (!k.kept) pruned += k.members;
+      if (k.mu_d.n > 0) lo = std::min(lo, k.mu_d.mean), hi = std::max(hi, k.mu_d.mean);
+    }
+    if (pruned > 0)
+      s += "; " + std::to_string(pruned) + " candidates were pruned by contact-fraction class (their class's mu_d, " +
+           "between " + printed(lo) + " and " + printed(hi) + " over the classes, lies more than " +
+           printed(q.classes.margin) + " from mu_d " + q.target.mu_d.text() + "; mu_d is set by the contact fraction, "
+           "paper Sec. III)";
+  }
   if (c.dropped_contact > 0)
     s += "; the contact-fraction constraint [" + printed(q.space.min_contact) + ", " + printed(q.space.max_contact) +
          "] excluded " + std::to_string(c.dropped_contact) + " of " + std::to_string(c.generated) +
@@ -58,7 +72,8 @@ std::string excluded(const Query& q, const Outcome& o) {
 
 std::string infeasible_reason(const Query& q, const Outcome& o) {
   if (o.feasible) return "";
-  if (o.candidates.kept.empty()) return "no candidate is left in the design space" + excluded(q, o);
+  if (o.candidates.kept.empty() || o.search.estimates.empty())
+    return "no candidate is left in the design space" + excluded(q, o);
   std::string why;
   for (Quantity k : {Quantity::MuS, Quantity::MuD, Quantity::Ratio}) {
     if (!q.target.of(k).set) continue;

@@ -5,6 +5,7 @@
 // are report.hpp's.
 #include <atomic>
 
+#include "springblock/design/classes.hpp"
 #include "springblock/design/search.hpp"
 #include "springblock/design/space.hpp"
 #include "springblock/design/target.hpp"
@@ -17,6 +18,8 @@ struct Query {
   DesignSpace space;
   Target target;
   SearchOptions search;
+  bool class_prune = true;  // with a mu_d target: prune contact-fraction classes first (classes.hpp)
+  ClassOptions classes;
   int top = 5;            // candidates verified and reported
   int verify_reps = 10;   // fresh full repetitions of each
 };
@@ -26,6 +29,8 @@ void validate(const Query& q);
 
 struct Outcome {
   CandidateSet candidates;
+  bool classes_used = false;
+  ClassPrune classes;
   SearchResult search;
   std::vector<Verified> verified;
   bool feasible = false;  // some verified candidate meets the target

@@ -43,6 +43,21 @@ nlohmann::json verified_json(const Outcome& o, const Verified& v) {
   return j;
 }
 
+// The contact-fraction classes (classes.hpp), or null when the query did not prune on them.
+nlohmann::json classes_json(const Query& q, const Outcome& o) {
+  if (!o.classes_used) return nullptr;
+  nlohmann::json list = nlohmann::json::array();
+  int pruned = 0;
+  for (const auto& c : o.classes.classes) {
+    list.push_back({{"contact_lo", c.lo}, {"contact_hi", c.hi}, {"members", c.members},
+                    {"representative", o.candidates.kept[c.representative].spec.text()}, {"mu_d", c.mu_d}, {"kept", c.kept}});
+    if (!c.kept) pruned += c.members;
+  }
+  return {{"rule", "mu_d of a class's representative farther than margin from the mu_d interval: class pruned"},
+          {"bin_width", q.classes.bin_width}, {"margin", q.classes.margin}, {"reps", q.classes.reps},
+          {"seed", o.classes.seed}, {"cpu_s", o.classes.cpu_s}, {"candidates_pruned", pruned}, {"classes", list}};
+}
+
 nlohmann::json search_json(const Query& q, const Outcome& o) {
   nlohmann::json rungs = nlohmann::json::array();
   for (const auto& r : o.search.rungs)
@@ -61,6 +76,7 @@ nlohmann::json search_json(const Query& q, const Outcome& o) {
                            {"min_feature", q.space.min_feature}}},
           {"candidates", {{"generated", c.generated}, {"simulated", c.kept.size()}, {"dropped_contact", c.dropped_contact},
                           {"dropped_feature", c.dropped_feature}, {"dropped_same_mask", c.dropped_duplicate}}},
+          {"contact_classes", classes_json(q, o)},
           {"rungs", rungs},
           {"verify_reps", q.verify_reps},
           {"verify_seed", stage_seed(q.base.seed, kVerifyStage)}};
@@ -70,7 +86,7 @@ nlohmann::json search_json(const Query& q, const Outcome& o) {
 // run to its first slip).
 nlohmann::json evaluated_json(const Outcome& o) {
   nlohmann::json all = nlohmann::json::array();
-  for (std::size_t k = 0; k < o.candidates.kept.size(); ++k) {
+  for (std::size_t k = 0; k < o.search.estimates.size(); ++k) {
     const Estimate& e = o.search.estimates[k];
     if (e.last_rung < 0) continue;
     const auto s = e.stat(Quantity::MuS), d = e.stat(Quantity::MuD);

@@ -31,6 +31,21 @@ bool rung_stops_at_slip(const Target& t, int rung) {
   return !t.needs_mu_d() || (rung == 0 && t.mu_s.set);
 }
 
+double prior(const SearchOptions& o, int k) {
+  return k < static_cast<int>(o.mu_d_prior.size()) ? o.mu_d_prior[k] : std::nan("");
+}
+
+// The factor a rung's survivors are cut by: eta, or, before the first rung of full runs after one
+// stopped at the first slip, the ratio of their costs per repetition when it is known (at least
+// eta). Successive halving spends about the same budget on every rung (Karnin et al. 2013); a
+// full run costs 10 to 30 runs to the first slip, so the same cut would make that rung cost 10
+// to 30 times the screen.
+double cut(const SearchOptions& o, const RungReport& r) {
+  const int reps = r.candidates * r.reps_added;
+  if (!r.stop_after_mu_s || o.full_rep_cpu_s <= 0 || reps == 0 || r.cpu_s <= 0) return o.eta;
+  return std::max<double>(o.eta, o.full_rep_cpu_s / (r.cpu_s / reps));
+}
+
 }  // namespace
 
 Statistic Estimate::stat(Quantity q) const {
@@ -52,22 +67,26 @@ Scene candidate_scene(const Scene& base, const Candidate& c, int reps, std::uint
   return s;
 }
 
-double optimistic_score(const Target& t, const Estimate& e) {
+double optimistic_score(const Target& t, const Estimate& e, double prior, double margin) {
   Target measured = t;
+  double from_prior = 0;
   if (e.mu_d.empty()) {
     measured.mu_d.set = measured.ratio.set = false;
     if (measured.objective != Quantity::MuS) measured.goal = Goal::None;
+    if (t.mu_d.set && std::isfinite(prior)) from_prior = std::max(0.0, distance(t.mu_d, prior) - margin);
   }
-  return score(measured, mean_of(e.mu_s), e.mu_d.empty() ? 1.0 : mean_of(e.mu_d));
+  return score(measured, mean_of(e.mu_s), e.mu_d.empty() ? 1.0 : mean_of(e.mu_d)) + from_prior;
 }
 
 SearchResult successive_halving(const Scene& base, const std::vector<Candidate>& candidates, const Target& target,
                                 const SearchOptions& o, const std::atomic<bool>* interrupt,
-                                const StageProgress& progress) {
+                                const StageProgress& progress, std::vector<int> alive) {
   SearchResult out;
   out.estimates.resize(candidates.size());
-  std::vector<int> alive(candidates.size());
-  std::iota(alive.begin(), alive.end(), 0);
+  if (alive.empty()) {
+    alive.resize(candidates.size());
+    std::iota(alive.begin(), alive.end(), 0);
+  }
   int reps_total = 0;
   for (int rung = 0;; ++rung) {
     const int target_reps = rung == 0 ? o.screen_reps : std::min(o.max_reps, reps_total * o.growth);
@@ -87,14 +106,14 @@ SearchResult successive_halving(const Scene& base, const std::vector<Candidate>&
     }
     out.rungs.push_back(rep);
     reps_total = target_reps;
-    std::stable_sort(alive.begin(), alive.end(), [&](int a, int b) {
-      return optimistic_score(target, out.estimates[a]) < optimistic_score(target, out.estimates[b]);
-    });
+    std::vector<double> key(candidates.size());
+    for (int k : alive) key[k] = optimistic_score(target, out.estimates[k], prior(o, k), o.prior_margin);
+    std::stable_sort(alive.begin(), alive.end(), [&](int a, int b) { return key[a] < key[b]; });
     // Stop at the final pool (or the repetition cap) unless mu_d is wanted and still unmeasured.
     const bool mu_d_pending = target.needs_mu_d() && rep.stop_after_mu_s;
     const bool done = (static_cast<int>(alive.size()) <= o.final_pool || reps_total >= o.max_reps) && !mu_d_pending;
     if (out.interrupted || done) break;
-    const int keep = std::max(o.final_pool, static_cast<int>(std::ceil(alive.size() / static_cast<double>(o.eta))));
+    const int keep = std::max(o.final_pool, static_cast<int>(std::ceil(alive.size() / cut(o, rep))));
     alive.resize(std::min(alive.size(), static_cast<std::size_t>(keep)));
   }
   out.ranking = alive;

@@ -8,6 +8,7 @@
 // scene seed, so the repetitions of different rungs are independent and the result does not
 // depend on the thread count.
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -26,6 +27,13 @@ struct SearchOptions {
   int growth = 2;       // ... and multiplies their repetitions by this
   int max_reps = 16;    // no rung goes beyond this many repetitions per candidate
   int final_pool = 15;  // halving stops once this many candidates survive
+  // From the contact-fraction classes (classes.hpp), when they ran: each candidate's class mu_d
+  // (NaN: none), used for the mu_d part of the score until the candidate's own mu_d is measured,
+  // less `prior_margin`; and the CPU seconds of one full repetition they measured, which sets the
+  // cut before the first rung of full runs (see successive_halving).
+  std::vector<double> mu_d_prior;
+  double prior_margin = 0;
+  double full_rep_cpu_s = 0;
 };
 
 // Everything measured on one candidate, over all the rungs it took part in.
@@ -60,16 +68,19 @@ constexpr int kVerifyStage = 1000;
 std::uint64_t stage_seed(std::uint64_t user_seed, int stage);
 
 // `base` is the validated scene of the query (chain, material, run control, threads, seed).
+// `alive`: the candidates rung 0 starts from (indices; empty = all of them).
 SearchResult successive_halving(const Scene& base, const std::vector<Candidate>& candidates, const Target& target,
                                 const SearchOptions& options, const std::atomic<bool>* interrupt = nullptr,
-                                const StageProgress& progress = {});
+                                const StageProgress& progress = {}, std::vector<int> alive = {});
 
 // The scene of one candidate in a stage: the base scene with its pattern, reps and seed.
 Scene candidate_scene(const Scene& base, const Candidate& c, int reps, std::uint64_t seed, bool stop_after_mu_s);
 
 // The score (target.hpp) of an estimate; parts of the target the estimate has not measured yet
 // (mu_d after a rung stopped at the first slip) count as met: an optimistic score, so a rung
-// that measured only mu_s drops only candidates that mu_s alone rules out.
-double optimistic_score(const Target& t, const Estimate& e);
+// that measured only mu_s drops only candidates that mu_s alone rules out. With a class prior
+// (`prior` finite), an unmeasured mu_d counts as the prior's distance to the mu_d interval less
+// `margin` (never below 0): optimistic by the margin.
+double optimistic_score(const Target& t, const Estimate& e, double prior = std::nan(""), double margin = 0);
 
 }  // namespace sb::design
