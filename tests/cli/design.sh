@@ -113,5 +113,14 @@ print(f"class prune: {classes['candidates_pruned']} candidates in {len(dropped)}
       f"feasible pruned {pruned['feasible']}, unpruned {unpruned['feasible']}")
 PY
 
+# 6. The other families: their answers are pattern strings that `run --pattern` accepts.
+for fam in "--family hierarchical --max-ng 24 --levels 2" "--family random --min-fraction 0.2 --max-fraction 0.8 --fraction-step 0.1"; do
+  # shellcheck disable=SC2086
+  p=$("$sb" design "${chain[@]}" $fam --target-mu-s 0.7 --top 1 --verify-reps 2 --threads 2 --json |
+    "$py" -c "import json,sys; print(json.load(sys.stdin)['best'][0]['pattern'])") || { echo "FAIL design $fam"; fail=1; continue; }
+  "$sb" run "${chain[@]}" --pattern "$p" --reps 1 --stop-after-mu-s true >/dev/null 2>&1 ||
+    { echo "FAIL design $fam answered '$p', which run --pattern refuses"; fail=1; }
+done
+
 [ $fail -eq 0 ] && echo "design: known target found, infeasible reported, bad bounds refused, thread-independent"
 exit $fail

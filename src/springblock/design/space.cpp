@@ -65,7 +65,8 @@ std::vector<PatternSpec> specs(const DesignSpace& s) {
     for (int k = 0; k <= steps; ++k) {
       PatternSpec spec;
       spec.kind = SurfaceKind::Random;
-      spec.groove_fraction = s.min_fraction + k * s.fraction_step;
+      // Rounded to 1e-9 so the pattern text is the fraction meant (0.85, not 0.8500000000000001).
+      spec.groove_fraction = std::round((s.min_fraction + k * s.fraction_step) * 1e9) / 1e9;
       out.push_back(spec);
     }
   }
