@@ -1,6 +1,7 @@
 #include "design_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -123,12 +124,18 @@ void print_table(const design::Query& q, const design::Outcome& o) {
   if (!o.feasible) std::printf("why: %s\n", design::infeasible_reason(q, o).c_str());
 }
 
+// One line per stage (classes, rungs, verification): its share done and its ETA, and the query's
+// elapsed time. Rung 0 is most of a query (README, Design a surface), so its ETA is nearly the
+// query's; the stages after it are each cheaper than the one before.
 design::StageProgress progress_printer() {
-  return [](const std::string& stage, double f, double elapsed) {
+  const auto start = std::chrono::steady_clock::now();
+  return [start](const std::string& stage, double f, double elapsed) {
     if (f <= 0) return;
-    char text[200];
-    std::snprintf(text, sizeof text, "springblock design: %s: %5.1f%%, ETA %s", stage.c_str(), 100 * f,
-                  shell::format_seconds(shell::eta_seconds(f, elapsed)).c_str());
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char text[240];
+    std::snprintf(text, sizeof text, "springblock design: %s: %5.1f%%, ETA of this stage %s (%s elapsed)", stage.c_str(),
+                  100 * f, shell::format_seconds(shell::eta_seconds(f, elapsed)).c_str(),
+                  shell::format_seconds(total).c_str());
     shell::show_progress(text);
   };
 }

@@ -40,8 +40,7 @@ ClassPrune prune_by_contact_class(const Scene& base, const std::vector<Candidate
   }
   const std::string label = "contact-fraction classes: " + std::to_string(scenes.size()) + " representatives x " +
                             std::to_string(o.reps) + " full reps";
-  const auto results = run_ensembles(
-      scenes, interrupt, progress ? [&](double f, double t) { progress(label, f, t); } : std::function<void(double, double)>{});
+  const auto results = run_stage(scenes, interrupt, progress, label);
   std::size_t i = 0;
   for (const auto& [bin, members] : bins) {
     ContactClass& c = out.classes[i];

@@ -1,6 +1,7 @@
 #include "springblock/design/search.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 
@@ -47,6 +48,33 @@ double cut(const SearchOptions& o, const RungReport& r) {
 }
 
 }  // namespace
+
+std::vector<EnsembleResult> run_stage(const std::vector<Scene>& scenes, const std::atomic<bool>* interrupt,
+                                      const StageProgress& progress, const std::string& label, std::size_t chunk) {
+  std::vector<EnsembleResult> out;
+  out.reserve(scenes.size());
+  const auto start = std::chrono::steady_clock::now();
+  const double n = static_cast<double>(scenes.size());
+  for (std::size_t first = 0; first < scenes.size(); first += chunk) {
+    const std::size_t last = std::min(scenes.size(), first + chunk);
+    const std::vector<Scene> part(scenes.begin() + static_cast<std::ptrdiff_t>(first),
+                                  scenes.begin() + static_cast<std::ptrdiff_t>(last));
+    std::function<void(double, double)> report;
+    if (progress)
+      report = [&, first, last](double f, double) {
+        const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        progress(label, (static_cast<double>(first) + f * static_cast<double>(last - first)) / n, t);
+      };
+    auto results = run_ensembles(part, interrupt, report);
+    for (auto& r : results) out.push_back(std::move(r));
+    if (interrupt && interrupt->load()) {
+      out.resize(scenes.size());  // the rest never ran: interrupted, no repetition
+      for (std::size_t k = last; k < scenes.size(); ++k) out[k].interrupted = true;
+      break;
+    }
+  }
+  return out;
+}
 
 Statistic Estimate::stat(Quantity q) const {
   return summarize(q == Quantity::MuS ? mu_s : q == Quantity::MuD ? mu_d : ratio);
@@ -96,8 +124,7 @@ SearchResult successive_halving(const Scene& base, const std::vector<Candidate>&
     for (int k : alive) scenes.push_back(candidate_scene(base, candidates[k], rep.reps_added, rep.seed, rep.stop_after_mu_s));
     const std::string label = "rung " + std::to_string(rung) + ": " + std::to_string(alive.size()) + " candidates x " +
                               std::to_string(rep.reps_added) + (rep.stop_after_mu_s ? " reps to first slip" : " full reps");
-    const auto results = run_ensembles(
-        scenes, interrupt, progress ? [&](double f, double t) { progress(label, f, t); } : std::function<void(double, double)>{});
+    const auto results = run_stage(scenes, interrupt, progress, label);
     for (std::size_t i = 0; i < alive.size(); ++i) {
       accumulate(out.estimates[alive[i]], results[i], rung);
       rep.wall_s += results[i].wall_s;

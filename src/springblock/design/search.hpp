@@ -62,6 +62,15 @@ struct SearchResult {
 // Called with a stage label ("rung 2: 47 candidates x 2 reps") and run_ensembles' progress.
 using StageProgress = std::function<void(const std::string& stage, double fraction, double elapsed_s)>;
 
+// Runs a stage's scenes with run_ensembles in chunks of at most `chunk` scenes (the same results
+// as one call: each scene's seeds do not depend on its neighbours), calling `progress` with the
+// stage's fraction and elapsed time. Why chunks: run_ensembles measures progress in simulated
+// time over each scene's duration, and a scene stopped at its first slip ends at a quarter of it,
+// so within one call the fraction, and the ETA from it, would be off by that factor; counting
+// finished chunks is not.
+std::vector<EnsembleResult> run_stage(const std::vector<Scene>& scenes, const std::atomic<bool>* interrupt,
+                                      const StageProgress& progress, const std::string& label, std::size_t chunk = 200);
+
 // The seed of a stage of a design query from the user's seed: rung k uses stage k + 1, the
 // verification stage kVerifyStage, so no two stages share a repetition's stream.
 constexpr int kVerifyStage = 1000;

@@ -17,8 +17,7 @@ std::vector<Verified> verify(const Scene& base, const std::vector<Candidate>& ca
   std::vector<Scene> scenes;
   for (int i = 0; i < n; ++i) scenes.push_back(candidate_scene(base, candidates[ranking[i]], reps, seed, false));
   const std::string label = "verification: " + std::to_string(n) + " candidates x " + std::to_string(reps) + " fresh full reps";
-  const auto results = run_ensembles(
-      scenes, interrupt, progress ? [&](double f, double t) { progress(label, f, t); } : std::function<void(double, double)>{});
+  const auto results = run_stage(scenes, interrupt, progress, label);
   std::vector<Verified> out;
   interrupted = false;
   for (int i = 0; i < n; ++i) {
