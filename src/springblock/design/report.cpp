@@ -109,7 +109,15 @@ std::string meets_rule() {
 nlohmann::json design_json(const Query& q, const Outcome& o, const std::string& command_line) {
   nlohmann::json best = nlohmann::json::array();
   for (const auto& v : o.verified) best.push_back(verified_json(o, v));
-  const nlohmann::json scene = q.base;
+  // The query's chain, material and run control; the pattern, repetitions and stop at the first
+  // slip are each stage's (search.rungs, verify_reps), and t0 and the duration in seconds each
+  // candidate's (t0 scales with its contact fraction), not the base scene's placeholders.
+  nlohmann::json scene = q.base;
+  for (const char* chosen : {"pattern", "reps", "stop_after_mu_s", "seed", "t0_s", "duration_s"}) scene.erase(chosen);
+  if (q.base.run.duration_s > 0)
+    scene["duration_s"] = q.base.run.duration_s;
+  else
+    scene["duration_t0"] = q.base.run.duration_t0;
   nlohmann::json j = {{"feasible", o.feasible},
                       {"best", best},
                       {"rule", meets_rule()},
