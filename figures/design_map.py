@@ -3,13 +3,14 @@
 L_x = 7.2 cm) over a grid of single-level periodic surfaces periodic:n_p,n_g, as heat maps with
 each cell's value. Cells the paper itself simulated (table tpat0) are outlined. Lines of equal
 contact fraction n_p/(n_p+n_g) run along the diagonals: mu_s falls towards large grooves along
-them and rises as the contact fraction falls; mu_d changes only where few blocks touch."""
+them and rises as the contact fraction falls; mu_d changes only where few blocks touch.
+Data: the optional study `design_map` (`make studies`; committed as paper/data/design_map.json)."""
 import math
 
 import style
 
 a = style.arguments(__doc__)
-doc = style.load_target(a.data, "design_map")
+doc = style.load_study(a.data, "design_map")
 fig, axes = style.plt.subplots(1, 2, figsize=(8.6, 4.0))
 cells = {}
 for s in style.scenes(doc):

@@ -43,7 +43,8 @@ set(SB_FIG_INPUTS_fig_p3 fig_p3)
 set(SB_FIG_INPUTS_sensitivity sensitivity)
 set(SB_FIG_INPUTS_accuracy_cost accuracy_cost)
 set(SB_FIG_INPUTS_schematics "")
-set(SB_FIG_INPUTS_design_map design_map)
+set(SB_FIG_INPUTS_design_map "")
+set(SB_FIG_STUDIES_design_map design_map)
 # figure name -> optional studies it draws (make studies; read from the build tree if run there,
 # else from the committed paper/data/<study>.json, which is what the file dependency watches).
 set(SB_FIG_STUDIES_accuracy_cost rk4_refinement)
