@@ -14,6 +14,7 @@
 #include "shell/interrupt.hpp"
 #include "shell/output.hpp"
 #include "shell/progress.hpp"
+#include "sweep_command.hpp"
 #include "work_table.hpp"
 #include "springblock/ensemble.hpp"
 #include "springblock/errors.hpp"
@@ -244,8 +245,10 @@ int main(int argc, char** argv) {
   auto* run = add_run_command(app, run_args);
   auto* pattern = add_pattern_command(app, pattern_args);
   add_theory_command(app, theory_args);
+  const sb::app::SweepCommand sweep(app);
   if (auto done = shell::parse(app, argc, argv, "springblock", "Run 'springblock --help' or 'springblock run --help'."))
     return *done;
+  if (sweep.parsed()) return sweep.run(shell::command_line(argc, argv));
   return shell::guarded("springblock", [&] {
     if (run->parsed()) return cmd_run(run_args, run, shell::command_line(argc, argv));
     if (pattern->parsed()) return cmd_pattern(pattern_args);
