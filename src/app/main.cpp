@@ -14,6 +14,7 @@
 #include "shell/interrupt.hpp"
 #include "shell/output.hpp"
 #include "shell/progress.hpp"
+#include "run_ranks.hpp"
 #include "sweep_command.hpp"
 #include "work_table.hpp"
 #include "springblock/ensemble.hpp"
@@ -143,7 +144,9 @@ int cmd_run(const RunArgs& a, CLI::App* cmd, const std::string& command_line) {
   const sb::Scene scene = run_scene(a, cmd);
   const auto* interrupt = shell::catch_interrupts();
   const bool show = a.progress || ::isatty(STDERR_FILENO);
-  auto result = sb::run_ensemble(scene, interrupt, show ? print_progress : std::function<void(double, double)>{});
+  auto ranked = sb::app::run_ensemble_on_ranks(scene, interrupt, show ? print_progress : std::function<void(double, double)>{});
+  if (!ranked) return shell::kOk;  // a rank other than 0 under mpirun: rank 0 reports
+  auto& result = *ranked;
   shell::end_progress_line();
   if (result.interrupted) {
     std::fprintf(stderr,

@@ -14,30 +14,15 @@
 #include "shell/progress.hpp"
 #include "springblock/errors.hpp"
 #include "springblock/io.hpp"
-#include "springblock/parallel/launch.hpp"
 #include "springblock/sweep/checkpoint.hpp"
 #include "springblock/sweep/results.hpp"
 #include "springblock/sweep/units.hpp"
-#ifdef SPRINGBLOCK_HAVE_MPI
-#include "springblock/parallel/mpi/mpi_scheduler.hpp"
-#endif
+#include "scheduler_choice.hpp"
 
 namespace sb::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::unique_ptr<parallel::Scheduler> make_scheduler(int threads) {
-#ifdef SPRINGBLOCK_HAVE_MPI
-  if (parallel::launched_by_mpirun()) return parallel::make_mpi_scheduler(threads);
-#else
-  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
-  if (size && std::atoi(size) > 1)
-    throw InputError("sweep", "this springblock was built without MPI (SPRINGBLOCK_MPI=OFF): every rank would "
-                              "run the whole sweep; run it without mpirun, or rebuild with MPI");
-#endif
-  return parallel::make_thread_scheduler(threads);
-}
 
 std::string out_path(const SweepOptions& o) {
   if (!o.out.empty()) return o.out;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # springblock sweep under mpirun: 2 ranks and 4 oversubscribed ranks give the numbers of one
-# process, bit for bit; a worker rank killed halfway is reported with the unit it lost, and
+# process, bit for bit, and so does springblock run --reps 8 on 2 ranks; a worker rank killed halfway is reported with the unit it lost, and
 # --resume (on another rank count) computes only the missing units, again with the same numbers;
 # a bad sweep file is refused once, with exit 2 and nothing written.
 # Usage: sweep_mpi.sh SPRINGBLOCK PYTHON MPIEXEC
@@ -21,28 +21,39 @@ for np in 2 4; do
   "$py" "$here/compare_results.py" "$dir/one.jsonl" "$dir/np$np.jsonl" || { echo "FAIL -np $np differs"; fail=1; }
 done
 
-# A worker rank killed halfway (3 ranks, one thread each; units of ~0.15 s).
+# springblock run spreads its repetitions the same way: --reps 8 on 2 ranks = one process.
+opts=(--N 40 --reps 8 --seed 11 --duration 3t0 --pattern periodic:3,1 --velocity 5cm/s --json)
+"$sb" run "${opts[@]}" >"$dir/run1.json" 2>/dev/null || { echo "FAIL run in one process"; fail=1; }
+mpi -np 2 "$sb" run "${opts[@]}" --threads 1 >"$dir/run2.json" 2>"$dir/run2.err" || { echo "FAIL run under mpirun"; cat "$dir/run2.err"; fail=1; }
+[ "$(wc -l <"$dir/run2.json")" -eq 1 ] || { echo "FAIL run under mpirun printed more than rank 0's line"; fail=1; }
+"$py" "$here/compare_results.py" "$dir/run1.json" "$dir/run2.json" || { echo "FAIL run: 2 ranks differ"; fail=1; }
+
+# A worker rank killed halfway (3 ranks, one thread each; 36 units of ~0.1 s).
 cat >"$dir/k.toml" <<'TOML'
 [base]
 N = 60
-duration = "20t0"
+duration = "15t0"
 velocity = "5cm/s"
-reps = 6
+reps = 12
 seed = 3
 [axes]
 pattern = ["smooth", "periodic:3,1", "hierarchical:2,2"]
 TOML
-units=18
+units=36
 "$sb" sweep "$dir/k.toml" --out "$dir/clean.jsonl" >/dev/null 2>&1 || { echo "FAIL clean sweep"; exit 1; }
 finished() { if [ -e "$1" ]; then grep -c '"unit"' "$1"; else echo 0; fi; }
 mpi -np 3 "$sb" sweep "$dir/k.toml" --threads 1 --out "$dir/k.jsonl" >/dev/null 2>"$dir/err" &
 job=$!
-i=0
-while [ "$(finished "$dir/k.jsonl.checkpoint")" -lt 4 ] && [ $i -lt 1000 ]; do sleep 0.01; i=$((i + 1)); done
-victim=""
-for p in $(pgrep -f "sweep $dir/k.toml"); do
-  tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1' && victim=$p
+victim="" i=0
+while [ -z "$victim" ] && [ $i -lt 1000 ]; do  # rank 1's process, found by its environment
+  for p in $(pgrep -f "sweep $dir/k.toml"); do
+    tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1' && victim=$p
+  done
+  i=$((i + 1))
 done
+# Killed once the first unit is in: mpirun takes a second or two to end the other ranks, which
+# go on meanwhile.
+while [ "$(finished "$dir/k.jsonl.checkpoint")" -lt 1 ] && [ $i -lt 2000 ]; do sleep 0.01; i=$((i + 1)); done
 [ -n "$victim" ] && kill -9 "$victim"
 wait $job 2>/dev/null
 [ $? -ne 0 ] || { echo "FAIL the job with a killed rank exited 0"; fail=1; }

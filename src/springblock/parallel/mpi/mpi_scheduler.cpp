@@ -2,6 +2,8 @@
 
 #include <mpi.h>
 
+#include <cstdio>
+#include <exception>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -12,7 +14,7 @@
 namespace sb::parallel {
 namespace {
 
-constexpr int kRequestTag = 1;  // worker -> 0: JSON text {record | returned, stop, error}
+constexpr int kRequestTag = 1;  // worker -> 0: JSON text {id and record | returned, stop, error}
 constexpr int kAssignTag = 2;   // 0 -> worker: a unit id, or -1 (that thread gets no more)
 
 double now_s() { return MPI_Wtime(); }
@@ -27,6 +29,7 @@ class MpiScheduler : public Scheduler {
     MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
     threads_ = resolve_threads(threads);
   }
+  // Every rank gets here: run() aborts the job itself when one of them fails inside it.
   ~MpiScheduler() override { MPI_Finalize(); }
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
@@ -45,11 +48,19 @@ class MpiScheduler : public Scheduler {
     // Rank 0 learns how many threads (request slots) each worker has.
     std::vector<int> slots(ranks_, 0);
     MPI_Gather(&threads_, 1, MPI_INT, slots.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    if (rank_ != 0) {
-      work(run_unit, interrupt);
-      return {};
+    try {
+      if (rank_ != 0) {
+        work(run_unit, interrupt);
+        return {};
+      }
+      return coordinate(ids, run_unit, hooks, interrupt, std::accumulate(slots.begin() + 1, slots.end(), 0));
+    } catch (const std::exception& e) {
+      // The other ranks wait on this one: say why here, then end them all.
+      std::fprintf(stderr, "springblock: rank %d: error: %s\n", rank_, e.what());
+      std::fflush(stderr);
+      MPI_Abort(MPI_COMM_WORLD, 1);
+      throw;
     }
-    return coordinate(ids, run_unit, hooks, interrupt, std::accumulate(slots.begin() + 1, slots.end(), 0));
   }
 
  private:
@@ -100,7 +111,7 @@ bool MpiScheduler::answer_one(Dealer& dealer, int& open_slots) {
   const auto msg = text.empty() ? nlohmann::json::object() : nlohmann::json::parse(text);
   if (msg.contains("error"))
     throw std::runtime_error("rank " + std::to_string(src) + ": " + msg.at("error").get<std::string>());
-  if (msg.contains("record")) dealer.finished(msg.at("record").at("unit").get<int>(), src, msg.at("record"));
+  if (msg.contains("record")) dealer.finished(msg.at("id").get<int>(), src, msg.at("record"));
   if (msg.contains("returned")) {
     dealer.give_back(msg.at("returned").get<int>());
     dealer.notes.push_back("rank " + std::to_string(src) + " was interrupted and gave back unit " +
@@ -143,6 +154,7 @@ void MpiScheduler::work(const UnitRunner& run_unit, const std::atomic<bool>* int
     } else if (d->record.is_null()) {
       msg["returned"] = d->id;  // cut short by an interrupt: not a result
     } else {
+      msg["id"] = d->id;
       msg["record"] = std::move(d->record);
     }
     if (interrupt && interrupt->load()) msg["stop"] = true;
