@@ -113,9 +113,10 @@ void report_resume(const sweep::Checkpoint& cp, const std::vector<sweep::Unit>& 
   }
 }
 
-int interrupted(const parallel::Outcome& o, const Ledger& l, const std::vector<sweep::Unit>& units,
+int interrupted(const parallel::Outcome& o, Ledger& l, const std::vector<sweep::Unit>& units,
                 parallel::Scheduler& s) {
   shell::end_progress_line();
+  l.checkpoint.sync();
   std::vector<Flight> flight;
   for (auto& f : o.unfinished) flight.push_back({f});
   std::fprintf(stderr,

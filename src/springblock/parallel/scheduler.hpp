@@ -33,7 +33,7 @@ struct Outcome {
   std::vector<std::string> notes;    // e.g. a worker rank that was interrupted and gave back its units
   // The coordinator's cost of talking to workers (the rank-0 bottleneck of the README's model):
   // messages received from workers and the seconds spent receiving, decoding and answering
-  // them, the hooks (checkpoint writes) included.
+  // them (the hooks, e.g. checkpoint writes, not included: their owner times them).
   long messages = 0;
   double message_s = 0;
 };

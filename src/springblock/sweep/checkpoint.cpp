@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,10 @@ namespace {
 
 nlohmann::json header(const std::string& fingerprint, int units) {
   return {{"checkpoint", "springblock sweep"}, {"fingerprint", fingerprint}, {"units", units}};
+}
+
+double steady_s() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 std::vector<std::string> read_lines(const std::string& path) {
@@ -73,13 +78,18 @@ void Checkpoint::load(const std::string& fingerprint, int units) {
     if (!finished_.count(unit)) lost_.push_back({unit, rank});
 }
 
-void Checkpoint::append(const std::string& line, bool sync) {
+void Checkpoint::append(const std::string& line, bool sync_due) {
   const std::string text = line + "\n";
   // One write per line, O_APPEND: a kill leaves at most the last line cut short.
   if (::write(fd_, text.data(), text.size()) != static_cast<ssize_t>(text.size()))
     throw std::runtime_error("cannot append to checkpoint '" + path_ + "': " + std::strerror(errno));
-  if (sync && ::fsync(fd_) != 0)
+  if (sync_due && steady_s() - last_sync_s_ >= 0.1) sync();
+}
+
+void Checkpoint::sync() {
+  if (fd_ >= 0 && ::fsync(fd_) != 0)
     throw std::runtime_error("cannot sync checkpoint '" + path_ + "': " + std::strerror(errno));
+  last_sync_s_ = steady_s();
 }
 
 void Checkpoint::assigned(int unit, int rank) {
