@@ -45,7 +45,14 @@ std::string results_jsonl(const std::vector<SweepScene>& scenes, const std::map<
 
 namespace {
 
-std::string value_text(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+// A varied value as a person reads it: 1e+06 rather than 1000000.0 (the JSON keeps every digit).
+std::string value_text(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (!v.is_number_float()) return v.dump();
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v.get<double>());
+  return buf;
+}
 
 std::string statistic_text(const nlohmann::json& st) {
   if (st.at("mean").is_null()) return "not measured";
@@ -60,14 +67,14 @@ std::string statistic_text(const nlohmann::json& st) {
 std::string summary_table(const std::vector<nlohmann::json>& lines) {
   std::string out;
   char buf[512];
-  std::snprintf(buf, sizeof buf, "%5s  %-40s  %-18s  %-18s  %4s  %8s\n", "scene", "varied", "mu_s +- sem",
+  std::snprintf(buf, sizeof buf, "%5s  %-44s  %-18s  %-18s  %4s  %8s\n", "scene", "varied", "mu_s +- sem",
                 "mu_d +- sem", "n", "wall_s");
   out += buf;
   for (const auto& l : lines) {
     std::string varied;
     for (auto& [k, v] : l.at("varied").items()) varied += (varied.empty() ? "" : " ") + k + "=" + value_text(v);
     if (varied.empty()) varied = "(base)";
-    std::snprintf(buf, sizeof buf, "%5d  %-40s  %-18s  %-18s  %4d  %8.2f\n", l.at("scene").get<int>(),
+    std::snprintf(buf, sizeof buf, "%5d  %-44s  %-18s  %-18s  %4d  %8.2f\n", l.at("scene").get<int>(),
                   varied.c_str(), statistic_text(l.at("mu_s")).c_str(), statistic_text(l.at("mu_d")).c_str(),
                   l.at("mu_s").at("n").get<int>(), l.at("wall_s").get<double>());
     out += buf;
