@@ -72,6 +72,40 @@ TEST(SweepExpand, LastAxisVariesFastest) {
   EXPECT_EQ(sb::sweep::make_units(scenes).size(), 12u);
 }
 
+TEST(SweepExpand, ListedScenesTimesAxes) {
+  const char* toml = R"([base]
+N = 20
+duration = "3t0"
+reps = 1
+
+[[scenes]]
+pattern = "smooth"
+
+[[scenes]]
+pattern = "periodic:3,1"
+N = 40
+
+[axes]
+seed = [1, 2, 3]
+)";
+  const auto spec = parse_toml(toml, "s.toml");
+  ASSERT_EQ(spec.scenes.size(), 2u);
+  EXPECT_EQ(spec.scenes[1][1].key, "N");
+  EXPECT_EQ(spec.scenes[1][1].line, 11);
+  const auto scenes = sb::sweep::expand(spec);
+  ASSERT_EQ(scenes.size(), 6u);  // listed scene slowest
+  EXPECT_EQ(scenes[2].scene.seed, 3u);
+  EXPECT_EQ(scenes[3].scene.geometry.N, 40);
+  EXPECT_EQ(scenes[3].varied.at("pattern"), "periodic:3,1");
+  EXPECT_EQ(scenes[0].scene.geometry.N, 20);
+  const auto json = parse_json(R"({"base": {"N": 20, "duration": "3t0", "reps": 1},
+    "scenes": [{"pattern": "smooth"}, {"pattern": "periodic:3,1",
+                                       "N": 40}],
+    "axes": {"seed": [1, 2, 3]}})", "s.json");
+  EXPECT_EQ(json.scenes[1][1].line, 3);
+  EXPECT_EQ(sb::sweep::fingerprint(sb::sweep::expand(json)), sb::sweep::fingerprint(scenes));
+}
+
 // The message of `spec`'s InputError, or "" when it expands.
 std::string error_of(const std::string& toml) {
   try {
