@@ -16,12 +16,12 @@ cat >"$dir/r.toml" <<'TOML'
 N = 60
 duration = "8t0"
 velocity = "5cm/s"
-reps = 6
+reps = 4
 seed = 3
 [axes]
 pattern = ["smooth", "periodic:3,1", "hierarchical:2,2"]
 TOML
-units=18
+units=12
 "$sb" sweep "$dir/r.toml" --threads 2 --out "$dir/clean.jsonl" >/dev/null 2>&1 || { echo "FAIL clean sweep"; exit 1; }
 
 finished() { if [ -e "$1" ]; then grep -c '"unit"' "$1"; else echo 0; fi; }
@@ -34,8 +34,8 @@ start_and_kill() {  # SIGNAL WANT
   wait $pid 2>/dev/null
 }
 
-# 1. kill -9 after 4 units: nothing but the checkpoint is left.
-start_and_kill KILL 4
+# 1. kill -9 after 3 units: nothing but the checkpoint is left.
+start_and_kill KILL 3
 [ ! -e "$dir/r.jsonl" ] || { echo "FAIL a killed sweep left a results file"; fail=1; }
 done_before=$(finished "$dir/r.jsonl.checkpoint")
 lost=$("$py" - "$dir/r.jsonl.checkpoint" <<'PY'
@@ -51,7 +51,7 @@ PY
 printf '{"unit": 17, "scene": 2, "mu' >>"$dir/r.jsonl.checkpoint"  # cut short mid-write
 "$sb" sweep "$dir/r.toml" --threads 2 --out "$dir/r.jsonl" --resume >"$dir/out" 2>"$dir/err" || { echo "FAIL resume"; cat "$dir/err"; exit 1; }
 computed=$("$py" -c 'import json,sys; print(json.loads(open(sys.argv[1]).readline())["computed_units"])' "$dir/r.jsonl")
-[ "$done_before" -ge 4 ] && [ "$done_before" -lt $units ] || { echo "FAIL the kill came too late ($done_before done)"; fail=1; }
+[ "$done_before" -ge 3 ] && [ "$done_before" -lt $units ] || { echo "FAIL the kill came too late ($done_before done)"; fail=1; }
 [ "$computed" -eq $((units - done_before)) ] ||
   { echo "FAIL resume computed $computed units, expected $units - $done_before"; fail=1; }
 if [ "$lost" -gt 0 ]; then
@@ -61,9 +61,9 @@ echo "killed with $done_before of $units units done, $lost in flight; the resume
 "$py" "$here/compare_results.py" "$dir/clean.jsonl" "$dir/r.jsonl" || { echo "FAIL resumed results differ"; fail=1; }
 [ ! -e "$dir/r.jsonl.checkpoint" ] || { echo "FAIL the checkpoint outlived the finished sweep"; fail=1; }
 
-# 2. Ctrl-C (SIGINT) after 3 units: exit 130, says what to do, keeps the checkpoint; then resume.
+# 2. Ctrl-C (SIGINT) after 2 units: exit 130, says what to do, keeps the checkpoint; then resume.
 rm -f "$dir/r.jsonl"
-start_and_kill INT 3
+start_and_kill INT 2
 rc=$?
 [ $rc -eq 130 ] || { echo "FAIL interrupted sweep exited $rc, expected 130"; fail=1; }
 grep -q -- "--resume" "$dir/err" || { echo "FAIL the interrupt message does not mention --resume"; cat "$dir/err"; fail=1; }
