@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "springblock/parallel/dealer.hpp"
 
@@ -87,8 +88,11 @@ Outcome MpiScheduler::coordinate(const std::vector<int>& ids, const UnitRunner& 
     if (!dealer.interrupted() && dealer.queue_empty() && pool.busy() == 0 && open_slots == 0) break;
     // Short waits while workers may be asking: a request is answered within about a millisecond.
     serve_pool(pool, dealer, 0, std::chrono::milliseconds(open_slots > 0 ? 1 : 100));
-    while (open_slots > 0 && !dealer.interrupted() && answer_one(dealer, open_slots)) {
-    }
+    bool answered = false;
+    while (open_slots > 0 && !dealer.interrupted() && answer_one(dealer, open_slots)) answered = true;
+    // With no unit of its own to wait on, rank 0 would spin on MPI_Iprobe and take a core from
+    // the workers finishing the last units: a short nap instead (it bounds the answer's delay).
+    if (!answered && pool.busy() == 0) std::this_thread::sleep_for(std::chrono::microseconds(500));
     dealer.tick();
   }
   Outcome o = dealer.outcome();
