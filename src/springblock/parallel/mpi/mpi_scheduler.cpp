@@ -90,9 +90,11 @@ Outcome MpiScheduler::coordinate(const std::vector<int>& ids, const UnitRunner& 
     serve_pool(pool, dealer, 0, std::chrono::milliseconds(open_slots > 0 ? 1 : 100));
     bool answered = false;
     while (open_slots > 0 && !dealer.interrupted() && answer_one(dealer, open_slots)) answered = true;
-    // With no unit of its own to wait on, rank 0 would spin on MPI_Iprobe and take a core from
-    // the workers finishing the last units: a short nap instead (it bounds the answer's delay).
-    if (!answered && pool.busy() == 0) std::this_thread::sleep_for(std::chrono::microseconds(500));
+    // With no unit left to run itself, rank 0 would spin on MPI_Iprobe and take a core from the
+    // workers finishing the last units: a short nap instead (it bounds the answer's delay). Not
+    // while units remain: its pool is empty for a moment after each of its own units.
+    if (!answered && pool.busy() == 0 && (dealer.queue_empty() || dealer.interrupted()))
+      std::this_thread::sleep_for(std::chrono::microseconds(500));
     dealer.tick();
   }
   Outcome o = dealer.outcome();
