@@ -2,6 +2,7 @@
 # springblock sweep under mpirun: 2 ranks and 4 oversubscribed ranks give the numbers of one
 # process, bit for bit, and so does springblock run --reps 8 on 2 ranks; a worker rank killed halfway is reported with the unit it lost, and
 # --resume (on another rank count) computes only the missing units, again with the same numbers;
+# a worker stopped by SIGTERM gives its unit back and the others finish the sweep;
 # a bad sweep file is refused once, with exit 2 and nothing written.
 # Usage: sweep_mpi.sh SPRINGBLOCK PYTHON MPIEXEC
 set -u
@@ -69,6 +70,24 @@ echo "killed rank 1 with $done_before of $units units done; the resume on 2 rank
 [ "$computed" -eq $((units - done_before)) ] || { echo "FAIL resume computed $computed, expected $((units - done_before))"; fail=1; }
 grep -q "rank 1: " "$dir/err2" || { echo "FAIL the resume did not name the units rank 1 lost"; fail=1; }
 "$py" "$here/compare_results.py" "$dir/clean.jsonl" "$dir/k.jsonl" || { echo "FAIL resumed results differ"; fail=1; }
+
+# A worker rank told to stop (SIGTERM to it alone) gives its unit back; the others finish the
+# sweep, which says so, with the same numbers.
+rm -f "$dir/k.jsonl"*
+mpi -np 3 "$sb" sweep "$dir/k.toml" --threads 1 --out "$dir/k.jsonl" >/dev/null 2>"$dir/err4" &
+job=$!
+victim="" i=0
+while [ -z "$victim" ] && [ $i -lt 1000 ]; do
+  for p in $(pgrep -f "sweep $dir/k.toml"); do
+    tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1' && victim=$p
+  done
+  i=$((i + 1))
+done
+while ! grep -qs '"rank":1' "$dir/k.jsonl.checkpoint" && [ $i -lt 2000 ]; do sleep 0.01; i=$((i + 1)); done
+[ -n "$victim" ] && kill -TERM "$victim"
+wait $job || { echo "FAIL the sweep did not finish without the stopped rank"; cat "$dir/err4"; fail=1; }
+grep -q "rank 1 was interrupted and gave back unit" "$dir/err4" || { echo "FAIL the given-back unit was not reported"; fail=1; }
+"$py" "$here/compare_results.py" "$dir/clean.jsonl" "$dir/k.jsonl" >/dev/null || { echo "FAIL results without rank 1 differ"; fail=1; }
 
 # A bad field: exit 2 from mpirun, said once, nothing written.
 printf '[base]\nN = 30\n[axes]\ncolour = ["red"]\n' >"$dir/bad.toml"
