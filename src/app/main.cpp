@@ -14,6 +14,7 @@
 #include "shell/interrupt.hpp"
 #include "shell/output.hpp"
 #include "shell/progress.hpp"
+#include "design_command.hpp"
 #include "run_ranks.hpp"
 #include "sweep_command.hpp"
 #include "work_table.hpp"
@@ -248,6 +249,7 @@ int main(int argc, char** argv) {
   auto* run = add_run_command(app, run_args);
   auto* pattern = add_pattern_command(app, pattern_args);
   add_theory_command(app, theory_args);
+  const sb::app::DesignCommand design(app);  // inverse design (design_command.hpp)
   const sb::app::SweepCommand sweep(app);
   if (auto done = shell::parse(app, argc, argv, "springblock", "Run 'springblock --help' or 'springblock run --help'."))
     return *done;
@@ -255,6 +257,7 @@ int main(int argc, char** argv) {
   return shell::guarded("springblock", [&] {
     if (run->parsed()) return cmd_run(run_args, run, shell::command_line(argc, argv));
     if (pattern->parsed()) return cmd_pattern(pattern_args);
+    if (design.parsed()) return design.run(shell::command_line(argc, argv));
     return cmd_theory(theory_args);
   });
 }

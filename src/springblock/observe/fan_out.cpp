@@ -63,6 +63,13 @@ long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, l
   return static_cast<long>(reached_min - k0);
 }
 
+bool FanOut::needs_positions_at(double t) const {
+  const long long k = index_of(t);
+  return std::any_of(views_.begin(), views_.end(), [&](const View& v) {
+    return !v.obs->wants_stop() && within_(t, v.t_end) && k >= v.next_k && v.obs->needs_positions_at(t);
+  });
+}
+
 bool FanOut::wants_stop() const {
   return std::all_of(views_.begin(), views_.end(), [](const View& v) { return v.obs->wants_stop(); });
 }

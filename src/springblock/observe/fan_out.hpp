@@ -46,6 +46,8 @@ class FanOut final : public Observer {
   bool wants_stop() const override;
   bool reads_groove_interiors() const override;
   bool reads_only_friction() const override;
+  // Positions are needed where a view that takes the sample at t needs them.
+  bool needs_positions_at(double t) const override;
 
   const std::vector<View>& views() const { return views_; }
 

@@ -9,6 +9,10 @@
 namespace sb {
 
 void FrictionObserver::sample(const Chain& c, const State& s) {
+  if (s.presummed.valid) {
+    record(c, s, s.presummed.abs / cfg_.F_load, s.presummed.signed_sum / cfg_.F_load, s.presummed.n_sliding);
+    return;
+  }
   // The contact blocks, listed once: grooves carry no friction and are skipped without a test.
   if (contacts_.empty() && c.n_contact > 0)
     for (int i = 0; i < c.N; ++i)
@@ -32,8 +36,10 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
     sum_abs += std::fabs(f);
     sum_signed += f;
   }
-  const double mu = sum_abs / cfg_.F_load;
-  const double mu_signed = sum_signed / cfg_.F_load;
+  record(c, s, sum_abs / cfg_.F_load, sum_signed / cfg_.F_load, n_sliding);
+}
+
+void FrictionObserver::record(const Chain& c, const State& s, double mu, double mu_signed, int n_sliding) {
   last_t_ = s.t;
 
   if (!slipped_) {

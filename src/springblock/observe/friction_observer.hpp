@@ -54,6 +54,8 @@ class FrictionObserver final : public Observer {
   // neighbours' positions); groove interiors are never read.
   bool reads_groove_interiors() const override { return false; }
   bool reads_only_friction() const override { return true; }
+  // mu(t) comes from State::presummed when a sample carries it; positions only for a snapshot.
+  bool needs_positions_at(double t) const override { return stress_due(t); }
 
   // Results.
   bool slipped() const { return slipped_; }
@@ -74,6 +76,8 @@ class FrictionObserver final : public Observer {
   const std::vector<StressSnapshot>& stress() const { return stress_; }
 
  private:
+  // One sample's mu(t), mu_signed(t) and sliding count into the peak, the window and the series.
+  void record(const Chain& c, const State& s, double mu, double mu_signed, int n_sliding);
   // A stress snapshot is due at a sample at time t (the first sample at or after its time).
   bool stress_due(double t) const;
   // Record one at time t from each block's friction force.

@@ -22,6 +22,13 @@ class Observer {
   // the stuck blocks' positions only, so an exact per-block integrator may leave the positions
   // of moving blocks unevaluated at samples.
   virtual bool reads_only_friction() const { return false; }
+  // Whether a sample at time t that carries its friction sums (State::presummed) needs the
+  // positions as well; an integrator may leave them unwritten where no observer needs them. An
+  // observer that reads State::presummed says when it does; the default always needs them.
+  virtual bool needs_positions_at(double t) const {
+    (void)t;
+    return true;
+  }
   // A stretch of samples at t_k = k dt, k = k0 .. k0 + n - 1, across which nothing switches and
   // every contact block's friction force is affine, f_i(t) = a[i] + b[i] t (s carries s.dir and
   // the slip counters; its positions are not those of any sample). An observer may take a

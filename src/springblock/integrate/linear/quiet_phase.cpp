@@ -19,7 +19,7 @@ double affine_crossing(double a, double b, double f) {
 
 }  // namespace
 
-QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c), shapes_(c) {
+QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), slider_slope_(c.K_s * c.v_slider), bases_(c), shapes_(c) {
   const int N = c.N;
   int offset = 0;
   for (int i = 0; i < N;) {
@@ -73,6 +73,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), bases_(c), shapes_(c) 
   affine_a_.resize(affine_blocks_.size());
   qs_.resize(offset);
   qds_.resize(offset);
+  end_dots_.resize(2 * segs_.size());
   order_.resize(edges_.size());
 }
 
@@ -138,7 +139,9 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
       for (int k = 0; k < s.n; ++k) a -= c.K_int * d.Q(e.row[n], k) * q0_[s.offset + k];
     }
     e.march.set_affine(a, b);
+    e.fa = a, e.fb = b;
   }
+  interior_ready_ = false;
 }
 
 double QuietPhase::all_dead_after() const {

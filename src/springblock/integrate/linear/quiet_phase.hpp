@@ -29,6 +29,7 @@
 #include <Eigen/Dense>
 
 #include "springblock/integrate/linear/affine_paths.hpp"
+#include "springblock/integrate/linear/common_slope_sum.hpp"
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/linear/run_basis.hpp"
@@ -52,6 +53,16 @@ class QuietPhase {
   // untouched. Enough for an observer that reads only the contact blocks' forces.
   void sample(double t, double* u, double* v, bool ends_only = false);
   void set_sample_dt(double dt);
+  // sample() in two halves: the modal coordinates brought to sample time t, then the rows
+  // written from them (write_sample needs the advance_sample of the same t before it).
+  void advance_sample(double t, bool ends_only);
+  void write_sample(double t, double* u, double* v, bool ends_only) const;
+  // For an observer of mu(t) alone, after advance_sample(t, true): the sums over the contact
+  // blocks of |f_i| and f_i at t, without writing a row. The blocks with no groove neighbour have
+  // one affine force each and cost O(1) together (CommonSlopeSum); a block beside a groove adds
+  // its segments' end rows' modes (the settle-scale cut of ends_only samples applies). Rounds
+  // differently from summing the forces of the written rows, not otherwise different.
+  void friction_sums(double t, double& sum_abs, double& sum_signed);
 
   struct Next {
     double t;   // event time, or t_limit when no stuck block reaches its threshold before it
@@ -94,6 +105,7 @@ class QuietPhase {
     int row[2] = {0, 0};  // row of the segment's mode matrix for the adjacent groove block
     EdgeMarch march;
     double lower = 0;  // lower bound on its crossing in the current phase
+    double fa = 0, fb = 0;  // its force less the modal part: fa + fb tau (begin)
   };
 
   // begin()'s work per segment: the particular solution and the modal coordinates of the
@@ -108,6 +120,7 @@ class QuietPhase {
                        double* v) const;
 
   double K_int_ = 0, t0_ = 0;
+  double slider_slope_ = 0;  // K_s v: the slope of every contact block's force in a quiet phase
   RunBases bases_;
   AffineShapes shapes_;
   std::vector<GrooveRun> segs_;
@@ -121,6 +134,9 @@ class QuietPhase {
   double sample_eps_u_ = 0, sample_eps_v_ = 0;
   int since_sync_ = 0;
   bool sample_valid_ = false;
+  CommonSlopeSum interior_;        // friction_sums: the contact blocks with no groove neighbour
+  bool interior_ready_ = false;    // interior_ holds this phase's forces
+  std::vector<double> end_dots_;   // friction_sums: per segment, first and last row . q
 };
 
 }  // namespace sb::event_detail

@@ -76,6 +76,11 @@ void QuietPhase::set_sample_dt(double dt) {
 }
 
 void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
+  advance_sample(t, ends_only);
+  write_sample(t, u, v, ends_only);
+}
+
+void QuietPhase::advance_sample(double t, bool ends_only) {
   const double tau = t - t0_;
   // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
   // from that by round-off only. Restart from the closed form every 64 samples regardless.
@@ -86,21 +91,31 @@ void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
     // An observer that reads only contact forces (ends_only) takes the modes as gone once they
     // are below the settle scales; one that reads every row gets them to round-off.
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
+    if (!live) continue;
     double* q = qs_.data() + s.offset;
     double* qd = qds_.data() + s.offset;
-    if (live) {
-      const RunBasis& d = *s.basis;
-      if (step) {
-        for (int k = 0; k < s.n; ++k) {
-          const double a = q[k], b = qd[k];
-          const Transition& P = d.sample[k];
-          q[k] = P[0] * a + P[1] * b;
-          qd[k] = P[2] * a + P[3] * b;
-        }
-      } else {
-        for (int k = 0; k < s.n; ++k) d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q[k], qd[k]);
+    const RunBasis& d = *s.basis;
+    if (step) {
+      for (int k = 0; k < s.n; ++k) {
+        const double a = q[k], b = qd[k];
+        const Transition& P = d.sample[k];
+        q[k] = P[0] * a + P[1] * b;
+        qd[k] = P[2] * a + P[3] * b;
       }
+    } else {
+      for (int k = 0; k < s.n; ++k) d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q[k], qd[k]);
     }
+  }
+  ts_ = t;
+  sample_valid_ = true;
+}
+
+void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) const {
+  const double tau = t - t0_;
+  for (const GrooveRun& s : segs_) {
+    const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
+    const double* q = qs_.data() + s.offset;
+    const double* qd = qds_.data() + s.offset;
     if (ends_only) {
       // Interior rows are left as they are: the caller's observer does not read them.
       const double* lq = live ? q : nullptr;  // dead modes: the affine part alone
@@ -110,8 +125,33 @@ void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
       to_physical(s, t, live, q, qd, u, v);
     }
   }
-  ts_ = t;
-  sample_valid_ = true;
+}
+
+void QuietPhase::friction_sums(double t, double& sum_abs, double& sum_signed) {
+  const double tau = t - t0_;
+  if (!interior_ready_) {
+    // Every interior force has the slider's slope K_s v (next_threshold's affine crossings).
+    interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
+    interior_ready_ = true;
+  }
+  interior_.at(tau, sum_abs, sum_signed);
+  // The end rows' modal displacement of each live segment (dead ones: none, as in write_sample).
+  for (std::size_t k = 0; k < segs_.size(); ++k) {
+    const GrooveRun& s = segs_[k];
+    double first = 0, last = 0;
+    if (tau <= s.sample_dead_tau) {
+      const RunBasis& d = *s.basis;
+      const double* q = qs_.data() + s.offset;
+      for (int j = 0; j < s.n; ++j) first += d.first_row[j] * q[j], last += d.last_row[j] * q[j];
+    }
+    end_dots_[2 * k] = first, end_dots_[2 * k + 1] = last;
+  }
+  for (const Edge& e : edges_) {
+    double f = e.fa + e.fb * tau;
+    for (int n = 0; n < e.nseg; ++n) f += K_int_ * end_dots_[2 * e.seg[n] + (e.row[n] == 0 ? 0 : 1)];
+    sum_abs += std::fabs(f);
+    sum_signed += f;
+  }
 }
 
 }  // namespace sb::event_detail

@@ -59,10 +59,7 @@ bool EventRun::serve_quiet_samples(double t_next) {
       }
     }
     sample_.t = clock_.next();
-    quiet_->sample(sample_.t, sample_.u.data(), sample_.v.data(), ends_only_);
-    ++s_.work.samples;
-    stamp_sample();
-    obs_.sample(c_, sample_);
+    serve_quiet_sample();
     clock_.advance();
     if (obs_.wants_stop()) {
       quiet_->evaluate(sample_.t, s_.u.data(), s_.v.data());
@@ -71,6 +68,24 @@ bool EventRun::serve_quiet_samples(double t_next) {
     }
   }
   return true;
+}
+
+// One sample at sample_.t from the quiet phase's modes. An observer of contact forces alone gets
+// the friction sums straight from the modes (QuietPhase::friction_sums), and the rows only where
+// it needs positions too.
+void EventRun::serve_quiet_sample() {
+  ++s_.work.samples;
+  stamp_sample();
+  quiet_->advance_sample(sample_.t, ends_only_);
+  sample_.presummed.valid = ends_only_;
+  if (ends_only_) {
+    quiet_->friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
+    sample_.presummed.n_sliding = 0;  // nothing slides in a quiet phase
+  }
+  if (!ends_only_ || obs_.needs_positions_at(sample_.t))
+    quiet_->write_sample(sample_.t, sample_.u.data(), sample_.v.data(), ends_only_);
+  obs_.sample(c_, sample_);
+  sample_.presummed.valid = false;
 }
 
 bool EventRun::sample_affine_stretch(double t_next, bool& stopped) {

@@ -49,6 +49,7 @@ class EventRun {
   // false when the observer stopped the run inside it.
   bool quiet_phase();
   bool serve_quiet_samples(double t_next);
+  void serve_quiet_sample();
   // Evolve: nothing to step (every mobile run is exact): jump to the next event or sample.
   void jump_exact();
   // Evolve: one trial step of the stepped runs, to its end or to the first event inside it.
