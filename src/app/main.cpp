@@ -15,6 +15,8 @@
 #include "shell/output.hpp"
 #include "shell/progress.hpp"
 #include "design_command.hpp"
+#include "run_ranks.hpp"
+#include "sweep_command.hpp"
 #include "work_table.hpp"
 #include "springblock/ensemble.hpp"
 #include "springblock/errors.hpp"
@@ -143,7 +145,9 @@ int cmd_run(const RunArgs& a, CLI::App* cmd, const std::string& command_line) {
   const sb::Scene scene = run_scene(a, cmd);
   const auto* interrupt = shell::catch_interrupts();
   const bool show = a.progress || ::isatty(STDERR_FILENO);
-  auto result = sb::run_ensemble(scene, interrupt, show ? print_progress : std::function<void(double, double)>{});
+  auto ranked = sb::app::run_ensemble_on_ranks(scene, interrupt, show ? print_progress : std::function<void(double, double)>{});
+  if (!ranked) return shell::kOk;  // a rank other than 0 under mpirun: rank 0 reports
+  auto& result = *ranked;
   shell::end_progress_line();
   if (result.interrupted) {
     std::fprintf(stderr,
@@ -246,8 +250,10 @@ int main(int argc, char** argv) {
   auto* pattern = add_pattern_command(app, pattern_args);
   add_theory_command(app, theory_args);
   const sb::app::DesignCommand design(app);  // inverse design (design_command.hpp)
+  const sb::app::SweepCommand sweep(app);
   if (auto done = shell::parse(app, argc, argv, "springblock", "Run 'springblock --help' or 'springblock run --help'."))
     return *done;
+  if (sweep.parsed()) return sweep.run(shell::command_line(argc, argv));
   return shell::guarded("springblock", [&] {
     if (run->parsed()) return cmd_run(run_args, run, shell::command_line(argc, argv));
     if (pattern->parsed()) return cmd_pattern(pattern_args);

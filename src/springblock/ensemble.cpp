@@ -347,6 +347,14 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
   return out;
 }
 
+EnsembleResult ensemble_from_runs(std::vector<RunResult> runs) {
+  EnsembleResult e;
+  e.runs = std::move(runs);
+  e.finished_reps = static_cast<int>(e.runs.size());
+  summarize_runs(e);
+  return e;
+}
+
 EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interrupt,
                             std::function<void(double, double)> progress) {
   return std::move(run_ensembles({scene}, interrupt, std::move(progress)).front());
@@ -374,6 +382,35 @@ void to_json(nlohmann::json& j, const RunResult& r) {
        {"steps", r.steps},     {"rhs_evals", r.rhs_evals}, {"switches", r.switches},
        {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}, {"cpu_s", r.cpu_s}, {"work", r.work}};
   for (const auto& o : observables()) j[o.name] = json_number(r.*o.value);
+}
+
+namespace {
+
+double json_double(const nlohmann::json& v) { return v.is_null() ? std::nan("") : v.get<double>(); }
+
+}  // namespace
+
+void from_json(const nlohmann::json& j, RunResult& r) {
+  r.rep = j.at("rep").get<int>();
+  r.slipped = j.at("slipped").get<bool>();
+  r.window_samples = j.at("window_samples").get<std::int64_t>();
+  r.steps = j.at("steps").get<std::int64_t>();
+  r.rhs_evals = j.at("rhs_evals").get<std::int64_t>();
+  r.switches = j.at("switches").get<std::int64_t>();
+  r.t_end_s = j.at("t_end_s").get<double>();
+  r.wall_s = j.at("wall_s").get<double>();
+  r.cpu_s = j.at("cpu_s").get<double>();
+  r.contact_fraction = json_double(j.value("contact_fraction", nlohmann::json()));
+  for (const auto& o : observables()) r.*o.value = json_double(j.at(o.name));
+  const auto& w = j.at("work");
+#define SB_COUNT(name, doc) r.work.name = w.at(#name).get<std::int64_t>();
+  SB_WORK_COUNTS(SB_COUNT)
+#undef SB_COUNT
+  r.work.timed = w.contains("stepping_s");
+  if (!r.work.timed) return;
+#define SB_TIME(name, doc) r.work.name = w.at(#name).get<double>();
+  SB_WORK_TIMES(SB_TIME)
+#undef SB_TIME
 }
 
 }  // namespace sb

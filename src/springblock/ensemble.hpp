@@ -95,10 +95,18 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes,
                                           std::function<void(double fraction, double elapsed_s)> progress = {},
                                           const std::vector<double>& weights = {});
 
+// The ensemble of `runs` (repetition r at index r, all finished) as run_ensemble returns it,
+// statistics included; wall_s and threads are the caller's. For repetitions run elsewhere
+// (springblock run under mpirun) and sent back as JSON (from_json below).
+EnsembleResult ensemble_from_runs(std::vector<RunResult> runs);
+
 // A number for the results JSON: null where it is not finite (never a NaN in a results file).
 nlohmann::json json_number(double x);
 void to_json(nlohmann::json& j, const Statistic& s);
 void to_json(nlohmann::json& j, const WorkProfile& w);
 void to_json(nlohmann::json& j, const RunResult& r);
+// The inverse of to_json(RunResult) plus "contact_fraction" (null reads back as NaN); the series
+// and stress snapshots are not carried.
+void from_json(const nlohmann::json& j, RunResult& r);
 
 }  // namespace sb

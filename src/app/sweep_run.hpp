@@ -1,0 +1,18 @@
+#pragma once
+// The sweep command's run: read and expand the sweep file on every rank, open the checkpoint and
+// deal the missing units on the coordinator, then write the results and print the table.
+#include <string>
+
+namespace sb::app {
+
+struct SweepOptions {
+  std::string file, out;
+  int threads = 0;
+  bool resume = false, progress = false;
+};
+
+// Returns the exit code (shell::ExitCode). Throws InputError on the coordinator for bad input;
+// other ranks return kBadInput quietly (the coordinator says why, once).
+int run_sweep(const SweepOptions& options, const std::string& command_line);
+
+}  // namespace sb::app

@@ -1,0 +1,56 @@
+#include "springblock/parallel/dealer.hpp"
+
+namespace sb::parallel {
+
+Dealer::Dealer(const std::vector<int>& ids, const Hooks& hooks, const std::atomic<bool>* interrupt)
+    : queue_(ids.begin(), ids.end()), hooks_(hooks), interrupt_(interrupt) {}
+
+std::optional<int> Dealer::next(int rank) {
+  if (queue_.empty() || interrupted()) return std::nullopt;
+  const int id = queue_.front();
+  queue_.pop_front();
+  holder_[id] = rank;
+  if (hooks_.assigned) hooks_.assigned(id, rank);
+  return id;
+}
+
+void Dealer::finished(int id, int rank, nlohmann::json record) {
+  if (record.is_null()) return;  // interrupted: still held, reported as unfinished
+  holder_.erase(id);
+  if (hooks_.finished) hooks_.finished(id, rank, std::move(record));
+}
+
+void Dealer::give_back(int id) {
+  holder_.erase(id);
+  queue_.push_front(id);
+}
+
+void Dealer::tick() {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_tick_ < std::chrono::milliseconds(200)) return;
+  last_tick_ = now;
+  if (hooks_.tick) hooks_.tick();
+}
+
+Outcome Dealer::outcome() const {
+  Outcome o;
+  o.interrupted = interrupted();
+  for (auto& [id, rank] : holder_) o.unfinished.push_back({id, rank});
+  o.notes = notes;
+  return o;
+}
+
+void serve_pool(LocalPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait) {
+  while (pool.has_room()) {
+    auto id = dealer.next(rank);
+    if (!id) break;
+    pool.submit(*id);
+  }
+  if (pool.busy() == 0) return;
+  if (auto d = pool.collect(wait)) {
+    if (d->error) std::rethrow_exception(d->error);
+    dealer.finished(d->id, rank, std::move(d->record));
+  }
+}
+
+}  // namespace sb::parallel

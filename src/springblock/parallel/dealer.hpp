@@ -1,0 +1,43 @@
+#pragma once
+// The coordinator's side of a scheduler: the queue of units not yet handed out, who holds which
+// unit, the hooks. One thread uses it (the coordinator's calling thread).
+#include <chrono>
+#include <deque>
+#include <map>
+#include <optional>
+
+#include "springblock/parallel/local_pool.hpp"
+#include "springblock/parallel/scheduler.hpp"
+
+namespace sb::parallel {
+
+class Dealer {
+ public:
+  Dealer(const std::vector<int>& ids, const Hooks& hooks, const std::atomic<bool>* interrupt);
+
+  // The next unit for `rank`, or nothing when none is left or the run is interrupted.
+  std::optional<int> next(int rank);
+  // A unit's result came back; a null record (cut short by an interrupt) stays unfinished.
+  void finished(int id, int rank, nlohmann::json record);
+  // A worker gave a unit back unrun (it was interrupted): another rank will run it.
+  void give_back(int id);
+  bool interrupted() const { return interrupt_ && interrupt_->load(); }
+  bool queue_empty() const { return queue_.empty(); }
+  int in_flight() const { return static_cast<int>(holder_.size()); }
+  void tick();  // calls hooks.tick at most every 0.2 s
+  Outcome outcome() const;
+  std::vector<std::string> notes;
+
+ private:
+  std::deque<int> queue_;
+  std::map<int, int> holder_;  // unit -> rank running it
+  const Hooks& hooks_;
+  const std::atomic<bool>* interrupt_;
+  std::chrono::steady_clock::time_point last_tick_{};
+};
+
+// One round of the coordinator's own threads: fills free threads from the dealer, then waits at
+// most `wait` for a finished unit and hands it to the dealer. Rethrows a unit's exception.
+void serve_pool(LocalPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait);
+
+}  // namespace sb::parallel
