@@ -168,11 +168,13 @@ def write_run_record(rdir, tier, jobs, phases, total, compiled):
         r = subprocess.run(["git", "-C", REPO] + list(args), capture_output=True, text=True)
         return r.stdout.strip() if r.returncode == 0 else "unknown"
     timings = json.load(open(os.path.join(rdir, "timings.json")))
+    # This run's targets only: timings.json also keeps weights of names that are no target now.
+    names = read_names(rdir, "targets.txt")
     record = {"tier": tier, "jobs": jobs, "cores": os.cpu_count(), "commit": git("rev-parse", "--short", "HEAD"),
               "dirty": bool(git("status", "--porcelain", "--untracked-files=no")),
               "date": time.strftime("%Y-%m-%d"), "total_s": total, "phases_s": phases,
               "compiled_units": compiled,
-              "targets_s": timings.get(tier, {})}
+              "targets_s": {n: t for n, t in timings.get(tier, {}).items() if n in names}}
     path = os.path.join(rdir, "last_run.json")
     json.dump(record, open(path + ".tmp", "w"), indent=1)
     os.replace(path + ".tmp", path)

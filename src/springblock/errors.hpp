@@ -17,6 +17,11 @@ struct InputError : std::runtime_error {
       : std::runtime_error(field_ + ": " + message), field(std::move(field_)) {}
 };
 
+// Throw InputError(field, message) unless ok: the one-line checks of input validation.
+inline void require(bool ok, const std::string& field, const std::string& message) {
+  if (!ok) throw InputError(field, message);
+}
+
 // A number as an error message prints it (printf's %g): short, and the same everywhere.
 inline std::string printed(double x) {
   char buf[32];

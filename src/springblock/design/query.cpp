@@ -9,10 +9,6 @@
 namespace sb::design {
 namespace {
 
-void require(bool ok, const std::string& field, const std::string& message) {
-  if (!ok) throw InputError(field, message);
-}
-
 // The classes' mu_d as every member's prior, and their measured cost of a full repetition.
 void class_hints(const ClassPrune& c, const ClassOptions& co, std::size_t n, SearchOptions& so) {
   so.mu_d_prior.assign(n, std::nan(""));

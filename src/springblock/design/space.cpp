@@ -9,10 +9,6 @@
 namespace sb::design {
 namespace {
 
-void require(bool ok, const std::string& field, const std::string& message) {
-  if (!ok) throw InputError(field, message);
-}
-
 void check_range(const std::string& lo_field, int lo, const std::string& hi_field, int hi, int N) {
   require(lo >= 1 && lo <= N, lo_field, std::to_string(lo) + " is outside [1, N = " + std::to_string(N) + "]");
   require(hi >= 1 && hi <= N, hi_field, std::to_string(hi) + " is outside [1, N = " + std::to_string(N) + "]");
