@@ -73,9 +73,16 @@ def runs_in_seconds(path):
     return out
 
 
+def when(ctx):
+    """A benchmark's start as date and UTC minute: make bench and make reproduce-all run apart, so the
+    minute tells which run (and, through the cost model's line, which commit) a table comes from."""
+    d = ctx.get("date", "?")
+    return f"{d[:10]} {d[11:16]} UTC" if len(d) >= 16 else d
+
+
 def context_line(path):
     ctx = json.load(open(path)).get("context", {})
-    return f"{ctx.get('date', '?')[:10]}, {ctx.get('num_cpus', '?')} CPUs, {os.path.basename(path)}"
+    return f"{when(ctx)}, {ctx.get('num_cpus', '?')} CPUs, {os.path.basename(path)}"
 
 
 def methods_lines(path):
@@ -115,7 +122,7 @@ def vs_paper_lines(path):
     mhz = f" at {ctx['mhz_per_cpu']} MHz" if ctx.get("mhz_per_cpu") else ""
     out = ["", "The event method against the paper's method (RK4 at h = 1e-7 s, every step taken, nothing observed) "
                "and against the project's RK4: N = 360, L_x = 7.2 cm, 1 s simulated, seed 5, one repetition, one "
-               f"thread, median CPU time of interleaved repetitions ({ctx.get('date', '?')[:10]}, "
+               f"thread, median CPU time of interleaved repetitions ({when(ctx)}, "
                f"{ctx.get('num_cpus', '?')} CPUs{mhz}, {os.path.basename(path)}; `bench/bench_vs_paper.cpp`). "
                "CPU time rather than wall time: the machine is shared, and another user's load stretches the wall "
                "time of a run but not its work:", "",

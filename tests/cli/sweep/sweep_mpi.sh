@@ -43,18 +43,24 @@ TOML
 units=24
 "$sb" sweep "$dir/k.toml" --out "$dir/clean.jsonl" >/dev/null 2>&1 || { echo "FAIL clean sweep"; exit 1; }
 finished() { if [ -e "$1" ]; then grep -c '"unit"' "$1"; else echo 0; fi; }
+# The pid of rank 1 of the running sweep of k.toml (found by its environment), once the checkpoint
+# shows it holding a unit.
+rank1_when_busy() {
+  local victim="" i=0 p
+  while [ -z "$victim" ] && [ $i -lt 1000 ]; do
+    for p in $(pgrep -f "sweep $dir/k.toml"); do
+      tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1' && victim=$p
+    done
+    i=$((i + 1))
+  done
+  while ! grep -qs '"rank":1' "$dir/k.jsonl.checkpoint" && [ $i -lt 2000 ]; do sleep 0.01; i=$((i + 1)); done
+  echo "$victim"
+}
 mpi -np 3 "$sb" sweep "$dir/k.toml" --threads 1 --out "$dir/k.jsonl" >/dev/null 2>"$dir/err" &
 job=$!
-victim="" i=0
-while [ -z "$victim" ] && [ $i -lt 1000 ]; do  # rank 1's process, found by its environment
-  for p in $(pgrep -f "sweep $dir/k.toml"); do
-    tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1' && victim=$p
-  done
-  i=$((i + 1))
-done
 # Killed as soon as it holds a unit: mpirun takes a second or two to end the other ranks, which
 # go on meanwhile, so the units must outlast that.
-while ! grep -qs '"rank":1' "$dir/k.jsonl.checkpoint" && [ $i -lt 2000 ]; do sleep 0.01; i=$((i + 1)); done
+victim=$(rank1_when_busy)
 [ -n "$victim" ] && kill -9 "$victim"
 wait $job 2>/dev/null
 [ $? -ne 0 ] || { echo "FAIL the job with a killed rank exited 0"; fail=1; }
@@ -76,14 +82,7 @@ grep -q "rank 1: " "$dir/err2" || { echo "FAIL the resume did not name the units
 rm -f "$dir/k.jsonl"*
 mpi -np 3 "$sb" sweep "$dir/k.toml" --threads 1 --out "$dir/k.jsonl" >/dev/null 2>"$dir/err4" &
 job=$!
-victim="" i=0
-while [ -z "$victim" ] && [ $i -lt 1000 ]; do
-  for p in $(pgrep -f "sweep $dir/k.toml"); do
-    tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1' && victim=$p
-  done
-  i=$((i + 1))
-done
-while ! grep -qs '"rank":1' "$dir/k.jsonl.checkpoint" && [ $i -lt 2000 ]; do sleep 0.01; i=$((i + 1)); done
+victim=$(rank1_when_busy)
 [ -n "$victim" ] && kill -TERM "$victim"
 wait $job || { echo "FAIL the sweep did not finish without the stopped rank"; cat "$dir/err4"; fail=1; }
 grep -q "rank 1 was interrupted and gave back unit" "$dir/err4" || { echo "FAIL the given-back unit was not reported"; fail=1; }
