@@ -54,7 +54,8 @@ def arguments(description, extra=None):
     p.add_argument("--data", required=True, help="directory holding <target>/<target>.json")
     p.add_argument("--out", required=True, help="directory for the PNG and PDF")
     p.add_argument("--springblock", default=None,
-                   help="simulator binary (pattern masks); default: DATA/../src/springblock or $SPRINGBLOCK_EXE")
+                   help="a program with the simulator's `pattern` command (springblock_pattern or springblock), "
+                        "for the masks; default: $SPRINGBLOCK_EXE, else DATA/../src/springblock_pattern")
     if extra:
         extra(p)
     a = p.parse_args()
@@ -154,9 +155,10 @@ def published_lookup():
 # ---------------------------------------------------------------- contact masks
 
 def springblock_exe(args):
-    cands = [args.springblock, os.environ.get("SPRINGBLOCK_EXE"),
-             str(Path(args.data).resolve().parent / "src" / "springblock"),
-             str(REPO / "build" / "src" / "springblock")]
+    # springblock_pattern first: reproduce-all builds it, not the whole command-line tool.
+    cands = [args.springblock, os.environ.get("SPRINGBLOCK_EXE")]
+    for src in (Path(args.data).resolve().parent / "src", REPO / "build" / "src"):
+        cands += [str(src / "springblock_pattern"), str(src / "springblock")]
     for c in cands:
         if c and os.access(c, os.X_OK):
             return c

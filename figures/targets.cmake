@@ -74,8 +74,8 @@ foreach(fig ${SB_FIGURES})
   add_custom_command(
     OUTPUT ${png} ${SB_FIG_OUT}/${fig}.pdf
     COMMAND ${SB_PY} ${SB_FIG_SRC}/${fig}.py --data ${SB_REPRO_DIR} --out ${SB_FIG_OUT}
-            --springblock $<TARGET_FILE:springblock>
-    DEPENDS ${SB_FIG_SRC}/${fig}.py ${SB_FIG_COMMON} ${json_deps} springblock
+            --springblock $<TARGET_FILE:springblock_pattern>
+    DEPENDS ${SB_FIG_SRC}/${fig}.py ${SB_FIG_COMMON} ${json_deps} springblock_pattern
     COMMENT "Figure ${fig}"
     VERBATIM)
   list(APPEND SB_FIG_PNGS ${png})

@@ -15,6 +15,7 @@
 #include "shell/output.hpp"
 #include "shell/progress.hpp"
 #include "design_command.hpp"
+#include "pattern_command.hpp"
 #include "run_ranks.hpp"
 #include "sweep_command.hpp"
 #include "work_table.hpp"
@@ -32,12 +33,6 @@ struct RunArgs {
   shell::FieldOptions fields;
   std::string scene_file, out_path, series_path;
   bool json = false, progress = false, profile = false;
-};
-
-struct PatternArgs {
-  int N = 120;
-  std::string spec = "smooth";
-  std::string layout = sb::PatternSpec{}.layout_text();
 };
 
 struct TheoryArgs {
@@ -169,15 +164,6 @@ int cmd_run(const RunArgs& a, CLI::App* cmd, const std::string& command_line) {
   return shell::kOk;
 }
 
-int cmd_pattern(const PatternArgs& a) {
-  auto spec = sb::parse_pattern(a.spec);
-  spec.layout = sb::parse_layout(a.layout);
-  auto mask = sb::build_contact_mask(spec, a.N, 1);
-  for (auto m : mask) std::putchar(m ? '1' : '0');
-  std::printf("\n%.17g\n", sb::contact_fraction(mask));
-  return shell::kOk;
-}
-
 void print_theory_text(const sb::theory::SingleBlock& b, const sb::FrictionDistribution& f, double mu_d_pt,
                        const sb::theory::SingleBlockCycle& c, double avg) {
   std::printf("single block: m = %.4g kg, k = K_s = %.4g N/m, v = %.4g m/s, F_n = %.4g N\n", b.m_kg, b.k_N_per_m,
@@ -221,15 +207,6 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& a) {
   return run;
 }
 
-CLI::App* add_pattern_command(CLI::App& app, PatternArgs& a) {
-  auto* cmd = app.add_subcommand("pattern", "print a surface's contact mask (1 = pawl, 0 = groove) and S/S_tot");
-  cmd->add_option("--N", a.N, "number of blocks")->check(CLI::Range(1, 1000000));
-  cmd->add_option("--pattern", a.spec, "smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION");
-  cmd->add_option("--layout", a.layout, "pawl_first | symmetric | groove_first | one_based (per level, comma separated)")
-      ->default_str(a.layout);
-  return cmd;
-}
-
 CLI::App* add_theory_command(CLI::App& app, TheoryArgs& a) {
   auto* cmd = app.add_subcommand("theory", "closed-form single-block predictions (K_int = 0 limit)");
   a.fields.add_all(cmd);
@@ -244,10 +221,9 @@ int main(int argc, char** argv) {
                "Quantities take unit suffixes (7.2cm, 1e-4ms, 10/ms, 5MPa); bare numbers are SI."};
   app.require_subcommand(1);
   RunArgs run_args;
-  PatternArgs pattern_args;
   TheoryArgs theory_args;
   auto* run = add_run_command(app, run_args);
-  auto* pattern = add_pattern_command(app, pattern_args);
+  const sb::app::PatternCommand pattern(app);  // pattern_command.hpp, shared with springblock_pattern
   add_theory_command(app, theory_args);
   const sb::app::DesignCommand design(app);  // inverse design (design_command.hpp)
   const sb::app::SweepCommand sweep(app);
@@ -256,7 +232,7 @@ int main(int argc, char** argv) {
   if (sweep.parsed()) return sweep.run(shell::command_line(argc, argv));
   return shell::guarded("springblock", [&] {
     if (run->parsed()) return cmd_run(run_args, run, shell::command_line(argc, argv));
-    if (pattern->parsed()) return cmd_pattern(pattern_args);
+    if (pattern.parsed()) return pattern.run();
     if (design.parsed()) return design.run(shell::command_line(argc, argv));
     return cmd_theory(theory_args);
   });
