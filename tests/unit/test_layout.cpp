@@ -51,6 +51,39 @@ TEST(Layout, SymmetricIsAMirrorImageWheneverPossible) {
   }
 }
 
+// The symmetric rule by its definition, pair by pair over the whole chain: the least mismatched
+// mirror pairs, then a pawl first, then the smallest phase. surface.cpp sums one period's pairs
+// and multiplies; this is the reference it must equal.
+std::string symmetric_by_definition(int pawl, int groove, int N) {
+  const int period = pawl + groove;
+  int best = 0;
+  long best_asym = -1;
+  bool best_pawl = false;
+  for (int ph = 0; ph < period; ++ph) {
+    auto at = [&](int j) { return (j + ph) % period < pawl; };
+    long asym = 0;
+    for (int j = 0; j < N / 2; ++j) asym += at(j) != at(N - 1 - j);
+    if (best_asym < 0 || asym < best_asym || (asym == best_asym && at(0) && !best_pawl))
+      best = ph, best_asym = asym, best_pawl = at(0);
+  }
+  std::string out;
+  for (int j = 0; j < N; ++j) out += (j + best) % period < pawl ? '1' : '0';
+  return out;
+}
+
+TEST(Layout, SymmetricEqualsItsDefinitionOnEveryShortChain) {
+  // Every period up to 13 and every chain from one period to 4 periods + 3 blocks: chains shorter
+  // than a period's pairs, whole periods, and every remainder.
+  int checked = 0;
+  for (int pawl = 1; pawl <= 6; ++pawl)
+    for (int groove = 1; groove <= 7; ++groove)
+      for (int N = pawl + groove; N <= 4 * (pawl + groove) + 3; ++N, ++checked)
+        ASSERT_EQ(mask("periodic:" + std::to_string(pawl) + "," + std::to_string(groove), N, "symmetric"),
+                  symmetric_by_definition(pawl, groove, N))
+            << "periodic:" << pawl << "," << groove << " N=" << N;
+  EXPECT_GT(checked, 1000);
+}
+
 TEST(Layout, WholePeriodsKeepTheContactFraction) {
   // On a whole number of periods the phase only moves the pattern: S/S_tot is the same.
   for (const char* rule : {"pawl_first", "symmetric", "groove_first", "one_based"}) {
