@@ -127,25 +127,51 @@ double EdgeMarch::envelope_skip(double aff, double mb, double fs) const {
   return inside ? affine_reach(aff, b_, room) : 0.0;
 }
 
+void EdgeMarch::gap(const double* q0, const double* p0, double fs, double tau, double& g, double& dg) {
+  direct(q0, p0, tau);
+  double F = a_ + b_ * tau, dF = b_;
+  for (std::size_t k = 0; k < modes_.size(); ++k) F += modes_[k].w * q_[k], dF += modes_[k].w * qd_[k];
+  g = fs - measure(F);
+  dg = (sense_ == Sense::Abs && F < 0) ? dF : -dF;
+}
+
 // Shrink a bracket with gap g = fs - measure(F) > 0 at lo and <= 0 at hi to round-off in t;
-// returns the crossed end. Regula falsi with the Illinois modification (the retained end's gap
-// is halved when the same end is kept twice), falling back to bisection whenever the secant
-// point is not well inside: the bracket is kept at every iteration, and a smooth gap needs ~10
-// direct evaluations instead of ~50 for plain bisection.
+// returns the crossed end. Every evaluation gives the gap's slope for free (gap()), so the next
+// point is Newton's, aimed a quarter of the tolerance past its root estimate: once the estimate
+// is that good the point lands on the far side and closes the bracket. A Newton point outside
+// the bracket, or a Newton step that did not halve it, hands one iteration to regula falsi with
+// the Illinois modification (bisection when the secant point is not well inside), which keeps
+// the bracket at every iteration. A smooth gap takes ~5 direct evaluations instead of the ~10 of
+// regula falsi alone.
 double EdgeMarch::refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                          double ghi) {
-  int kept = 0;  // +1: lo kept last time, -1: hi kept last time
-  for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(t0 + hi); ++it) {
-    double mid = hi - ghi * (hi - lo) / (ghi - glo);
-    const double w = hi - lo;
-    if (!(mid > lo + 1e-3 * w && mid < hi - 1e-3 * w)) mid = 0.5 * (lo + hi);
-    const double gm = fs - measure(force(q0, p0, mid));
-    if (gm > 0) {
-      lo = mid, glo = gm;
+  int kept = 0;          // +1: lo kept last time, -1: hi kept last time
+  bool have = false;     // x, gx, dgx: the last evaluation
+  bool was_newton = false;
+  double x = 0, gx = 0, dgx = 0, w_before = kInf;
+  for (int it = 0; it < 200; ++it) {
+    const double w = hi - lo, tol = 4e-16 * std::fabs(t0 + hi);
+    if (!(w > tol)) break;
+    double mid = kInf;
+    if (have && dgx != 0 && !(was_newton && w > 0.5 * w_before)) {
+      const double step = -gx / dgx;
+      mid = x + step + std::copysign(0.25 * tol, step);
+      if (!(mid > lo && mid < hi)) mid = kInf;
+    }
+    was_newton = mid != kInf;
+    if (!was_newton) {
+      mid = hi - ghi * (hi - lo) / (ghi - glo);
+      if (!(mid > lo + 1e-3 * w && mid < hi - 1e-3 * w)) mid = 0.5 * (lo + hi);
+    }
+    w_before = w;
+    gap(q0, p0, fs, mid, gx, dgx);
+    x = mid, have = true;
+    if (gx > 0) {
+      lo = mid, glo = gx;
       if (kept == -1) ghi *= 0.5;
       kept = -1;
     } else {
-      hi = mid, ghi = gm;
+      hi = mid, ghi = gx;
       if (kept == 1) glo *= 0.5;
       kept = 1;
     }

@@ -19,7 +19,8 @@
 //    at 2^-kMaxDepth of a grid step: a touch that exceeds the threshold by less than
 //    M2 (H 2^-kMaxDepth)^2 / 8 is below resolution, the same limit as the bisection of the
 //    Dormand-Prince event search (round-off in t);
-//  * bisection of a bracket to round-off in t (direct evaluations).
+//  * refinement of a bracket to round-off in t (direct evaluations): Newton on the gap, whose
+//    slope every evaluation gives, kept inside the bracket by regula falsi and bisection.
 // Every mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it), so the bounds
 // taken at one point hold for all later times.
 // With an open origin the event function may start on the threshold (a block that has just
@@ -79,13 +80,17 @@ class EdgeMarch {
   void grid_step();                                              // q_, qd_ advanced by H
   Sums sums(double tau) const;
   double force(const double* q0, const double* p0, double tau);  // F only, direct
+  // The gap fs - measure(F) at tau and its slope, from one direct evaluation (dF is the modes'
+  // velocities summed: no extra exp or sincos).
+  void gap(const double* q0, const double* p0, double fs, double tau, double& g, double& dg);
   double measure(double F) const { return sense_ == Sense::Abs ? (F < 0 ? -F : F) : F; }
   // First tau >= 0 at which the affine part a + b tau reaches the threshold (inf if never).
   double affine_reach(double a, double b, double fs) const;
   // A skip that provably passes no crossing: the time until the affine part at tau (aff) comes
   // within the modal bound mb of the threshold (0 if it already is).
   double envelope_skip(double aff, double mb, double fs) const;
-  // Bracket refinement of first_crossing: the crossed end of [lo, hi] to round-off in t.
+  // Bracket refinement of first_crossing: the crossed end of [lo, hi] to round-off in t
+  // (safeguarded Newton, Illinois regula falsi and bisection as fallbacks).
   double refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                 double ghi);
   bool graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi, double Fhi,
