@@ -87,7 +87,8 @@ int layout_phase(Layout rule, int pawl, int groove, int L) {
   // pawl, then the smallest phase. The mismatch of block j with its mirror L-1-j repeats with
   // period `period` in j (both ends move one block per step), so the sum over the L/2 pairs is
   // (whole periods) x (one period's sum) + (the first `rest` terms): O(period^2) per level, not
-  // O(period L), the same integers. A 10^6-block chain with 16-block periods took ~25 ms here.
+  // O(period L), the same integers. `springblock pattern --N 1000000 --pattern hierarchical:8,4`
+  // took 85 ms of CPU (a smooth one 22 ms); now 20 ms (15 ms).
   const int half = L / 2, whole = half / period, rest = half % period;
   int best = 0;
   long best_asym = -1;

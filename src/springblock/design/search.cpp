@@ -8,11 +8,6 @@
 namespace sb::design {
 namespace {
 
-double mean_of(const std::vector<double>& v) {
-  if (v.empty()) return std::nan("");
-  return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
-
 // Adds one stage's repetitions of a candidate to its estimate.
 void accumulate(Estimate& e, const EnsembleResult& r, int rung) {
   for (const RunResult& run : r.runs) {
@@ -103,7 +98,8 @@ double optimistic_score(const Target& t, const Estimate& e, double prior, double
     if (measured.objective != Quantity::MuS) measured.goal = Goal::None;
     if (t.mu_d.set && std::isfinite(prior)) from_prior = std::max(0.0, distance(t.mu_d, prior) - margin);
   }
-  return score(measured, mean_of(e.mu_s), e.mu_d.empty() ? 1.0 : mean_of(e.mu_d)) + from_prior;
+  // The estimate keeps only finite values, so summarize's mean is the plain mean (NaN if none).
+  return score(measured, summarize(e.mu_s).mean, e.mu_d.empty() ? 1.0 : summarize(e.mu_d).mean) + from_prior;
 }
 
 SearchResult successive_halving(const Scene& base, const std::vector<Candidate>& candidates, const Target& target,

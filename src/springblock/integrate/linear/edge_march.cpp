@@ -145,15 +145,14 @@ void EdgeMarch::gap(const double* q0, const double* p0, double fs, double tau, d
 // regula falsi alone.
 double EdgeMarch::refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                          double ghi) {
-  int kept = 0;          // +1: lo kept last time, -1: hi kept last time
-  bool have = false;     // x, gx, dgx: the last evaluation
+  int kept = 0;  // +1: lo kept last time, -1: hi kept last time
   bool was_newton = false;
-  double x = 0, gx = 0, dgx = 0, w_before = kInf;
+  double x = 0, gx = 0, dgx = 0, w_before = kInf;  // x, gx, dgx: the last evaluation (it > 0)
   for (int it = 0; it < 200; ++it) {
     const double w = hi - lo, tol = 4e-16 * std::fabs(t0 + hi);
     if (!(w > tol)) break;
     double mid = kInf;
-    if (have && dgx != 0 && !(was_newton && w > 0.5 * w_before)) {
+    if (it > 0 && dgx != 0 && !(was_newton && w > 0.5 * w_before)) {
       const double step = -gx / dgx;
       mid = x + step + std::copysign(0.25 * tol, step);
       if (!(mid > lo && mid < hi)) mid = kInf;
@@ -165,7 +164,7 @@ double EdgeMarch::refine(const double* q0, const double* p0, double fs, double t
     }
     w_before = w;
     gap(q0, p0, fs, mid, gx, dgx);
-    x = mid, have = true;
+    x = mid;
     if (gx > 0) {
       lo = mid, glo = gx;
       if (kept == -1) ghi *= 0.5;
