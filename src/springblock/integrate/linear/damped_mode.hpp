@@ -6,6 +6,7 @@
 // underdamped, critical and overdamped modes without dividing by a vanishing frequency.
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace sb::event_detail {
 
@@ -19,16 +20,22 @@ struct DampedMode {
 
   // q and q' at tau >= 0.
   void eval(double q0, double p0, double tau, double& q, double& qd) const {
+    eval_decayed(q0, p0, tau, decay(tau), q, qd);
+  }
+  // e^{-alpha tau}: the modes of one run share alpha (damping proportional to mass), so a caller
+  // evaluating several of them at one tau takes it once and passes it to eval_decayed, which
+  // gives eval's doubles exactly.
+  double decay(double tau) const { return std::exp(-alpha * tau); }
+  void eval_decayed(double q0, double p0, double tau, double e, double& q, double& qd) const {
     const double s = omega2 - alpha * alpha;
     const double x = s * tau * tau;
     double eC, eS;  // e^{-alpha tau} C, e^{-alpha tau} S
     if (std::fabs(x) < 1e-5) {
       // Series: avoids sin(w tau)/w with w -> 0 (near-critical modes, tau -> 0).
-      const double e = std::exp(-alpha * tau);
       eC = e * (1.0 - x / 2.0 + x * x / 24.0);
       eS = e * tau * (1.0 - x / 6.0 + x * x / 120.0);
     } else if (s > 0) {
-      const double w = std::sqrt(s), e = std::exp(-alpha * tau);
+      const double w = std::sqrt(s);
       eC = e * std::cos(w * tau);
       eS = e * std::sin(w * tau) / w;
     } else {
@@ -42,6 +49,17 @@ struct DampedMode {
     const double P = p0 + alpha * q0;
     q = q0 * eC + P * eS;
     qd = -alpha * q + (P * eC - s * q0 * eS);
+  }
+
+  // Modes k in [0, n) at one tau; e^{-alpha tau} is taken once per run of equal alpha.
+  template <class Mode, class Out>
+  static void eval_all(int n, const Mode& mode, double tau, const Out& out) {
+    double alpha_seen = std::numeric_limits<double>::quiet_NaN(), e = 0;
+    for (int k = 0; k < n; ++k) {
+      const DampedMode& m = mode(k);
+      if (!(m.alpha == alpha_seen)) e = m.decay(tau), alpha_seen = m.alpha;
+      out(k, m, e);
+    }
   }
 
   // The transition over dt: its columns are the solutions from (1, 0) and from (0, 1).

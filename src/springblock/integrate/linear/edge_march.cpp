@@ -62,8 +62,11 @@ void EdgeMarch::finish() {
 
 void EdgeMarch::direct(const double* q0, const double* p0, double tau) {
   ++direct_evals;
-  for (std::size_t k = 0; k < modes_.size(); ++k)
-    modes_[k].mode.eval(q0[modes_[k].index], p0[modes_[k].index], tau, q_[k], qd_[k]);
+  DampedMode::eval_all(
+      static_cast<int>(modes_.size()), [&](int k) -> const DampedMode& { return modes_[k].mode; }, tau,
+      [&](int k, const DampedMode& m, double e) {
+        m.eval_decayed(q0[modes_[k].index], p0[modes_[k].index], tau, e, q_[k], qd_[k]);
+      });
 }
 
 void EdgeMarch::grid_step() {

@@ -134,7 +134,10 @@ void ModalRuns::end() {
 
 void ModalRuns::coords(const Run& r, double t, double* q, double* qd) const {
   const double tau = t - r.t0;
-  for (int k = 0; k < r.hi - r.lo; ++k) r.basis->run->modes[k].eval(q0_[r.lo + k], p0_[r.lo + k], tau, q[k], qd[k]);
+  const auto& modes = r.basis->run->modes;
+  DampedMode::eval_all(
+      r.hi - r.lo, [&](int k) -> const DampedMode& { return modes[k]; }, tau,
+      [&](int k, const DampedMode& m, double e) { m.eval_decayed(q0_[r.lo + k], p0_[r.lo + k], tau, e, q[k], qd[k]); });
 }
 
 double ModalRuns::u(int i, double t) const {
@@ -142,11 +145,13 @@ double ModalRuns::u(int i, double t) const {
   const int n = r.hi - r.lo, row = i - r.lo;
   const double tau = t - r.t0;
   double x = A_[i] + B_[i] * t;
-  for (int k = 0; k < n; ++k) {
-    double q, qd;
-    r.basis->run->modes[k].eval(q0_[r.lo + k], p0_[r.lo + k], tau, q, qd);
-    x += r.basis->run->Q(row, k) * q;
-  }
+  const auto& modes = r.basis->run->modes;
+  DampedMode::eval_all(n, [&](int k) -> const DampedMode& { return modes[k]; }, tau,
+                       [&](int k, const DampedMode& m, double e) {
+                         double q, qd;
+                         m.eval_decayed(q0_[r.lo + k], p0_[r.lo + k], tau, e, q, qd);
+                         x += r.basis->run->Q(row, k) * q;
+                       });
   return x;
 }
 

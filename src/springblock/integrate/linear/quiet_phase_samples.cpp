@@ -57,8 +57,10 @@ void QuietPhase::evaluate(double t, double* u, double* v) const {
     if (!live) continue;
     for (int k0 = 0; k0 < s.n; k0 += 64) {
       const int k1 = std::min(s.n, k0 + 64);
-      for (int k = k0; k < k1; ++k)
-        d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q[k - k0], qd[k - k0]);
+      DampedMode::eval_all(k1 - k0, [&](int k) -> const DampedMode& { return d.modes[k0 + k]; }, tau,
+                           [&](int k, const DampedMode& m, double e) {
+                             m.eval_decayed(q0_[s.offset + k0 + k], p0_[s.offset + k0 + k], tau, e, q[k], qd[k]);
+                           });
       for (int k = k0; k < k1; ++k) {
         const double* col = d.Q.data() + static_cast<std::ptrdiff_t>(k) * s.n;
         for (int r = 0; r < s.n; ++r) {
@@ -103,7 +105,10 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
         qd[k] = P[2] * a + P[3] * b;
       }
     } else {
-      for (int k = 0; k < s.n; ++k) d.modes[k].eval(q0_[s.offset + k], p0_[s.offset + k], tau, q[k], qd[k]);
+      DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau,
+                           [&](int k, const DampedMode& m, double e) {
+                             m.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau, e, q[k], qd[k]);
+                           });
     }
   }
   ts_ = t;
