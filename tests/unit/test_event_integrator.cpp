@@ -347,6 +347,59 @@ TEST(EventIntegrator, SampleScalesChangeNoResult) {
   EXPECT_EQ(dropped.t_peak(), kept.t_peak());
 }
 
+// The same friction observer declining every block of quiet-phase samples offered as sums, so
+// that each of them is served one by one.
+class OneByOne final : public sb::Observer {
+ public:
+  explicit OneByOne(sb::FrictionObserver& inner) : inner_(inner) {}
+  void sample(const sb::Chain& c, const sb::State& s) override { inner_.sample(c, s); }
+  long sample_affine(const sb::Chain& c, const sb::State& s, long k0, double dt, long n, const double* a,
+                     const double* b) override {
+    return inner_.sample_affine(c, s, k0, dt, n, a, b);
+  }
+  bool wants_stop() const override { return inner_.wants_stop(); }
+  bool reads_groove_interiors() const override { return false; }
+  bool reads_only_friction() const override { return true; }
+  bool needs_positions_at(double t) const override { return inner_.needs_positions_at(t); }
+
+ private:
+  sb::FrictionObserver& inner_;
+};
+
+TEST(EventIntegrator, SummedSampleBlocksEqualTheSamplesOneByOne) {
+  // After loading, blocks of quiet-phase samples reach the mu_d window as closed-form sums over
+  // the modes (QuietPhase::window_sums). Against the same run serving them one by one: the same
+  // switching history (samples never act on the dynamics), mu_s and the window count exactly,
+  // mu_d to round-off (the sums of up to 64 samples rounded differently; measured 1e-16).
+  sb::Scene sc = small_scene(120, "periodic:4,16");
+  sc.run.stop_after_mu_s = false;
+  sc.run.duration_t0 = 3.0;
+  const sb::Chain c = sb::build_chain(sc, 0);
+  sb::FrictionObserverConfig cfg;
+  cfg.F_load = c.F_load;
+  cfg.peak_drop = sc.rules.peak_drop;
+  cfg.mu_d_skip_s = 0.25 * sc.t0_s();
+  sb::FrictionObserver summed(cfg), single(cfg);
+  OneByOne one(single);
+  sb::EventDriven e1(1e-9), e2(1e-9);
+  std::vector<double> log1, log2;
+  e1.set_switch_log(&log1);
+  e2.set_switch_log(&log2);
+  sb::State s1 = sb::State::at_rest(c), s2 = sb::State::at_rest(c);
+  e1.run(c, s1, sc.duration(), sc.run.sample_dt_s, summed);
+  e2.run(c, s2, sc.duration(), sc.run.sample_dt_s, one);
+  ASSERT_TRUE(summed.slipped());
+  EXPECT_GT(s1.work.summed_samples, 1000);  // the blocks were taken
+  EXPECT_EQ(s2.work.summed_samples, 0);
+  EXPECT_EQ(s1.work.samples + s1.work.stretch_samples + s1.work.summed_samples,
+            s2.work.samples + s2.work.stretch_samples);
+  EXPECT_EQ(log1, log2);
+  EXPECT_EQ(summed.mu_s(), single.mu_s());
+  EXPECT_EQ(summed.window_samples(), single.window_samples());
+  EXPECT_NEAR(summed.mu_d(), single.mu_d(), 1e-14 * single.mu_d());
+  EXPECT_NEAR(summed.mu_d_signed(), single.mu_d_signed(), 1e-14 * std::fabs(single.mu_d_signed()));
+}
+
 TEST(EventIntegrator, CreepingBlocksInModalRunsDoNotStutter) {
   // With (mu_d)_m = 0.9 and the clip policy about one block in six has mu_d = mu_s: once it
   // slides it creeps, and without damping its velocity touches zero once per period. The modal

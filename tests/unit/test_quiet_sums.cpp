@@ -36,6 +36,36 @@ TEST(CommonSlopeSum, EqualsThePlainSumAtAnyTime) {
   }
 }
 
+TEST(CommonSlopeSum, SumsOverTimesBetweenCrossingsEqualTheSummedValues) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> a_of(-1.0, 1.0);
+  for (double s : {2.5, -0.7, 0.0}) {
+    std::vector<double> a(40);
+    for (double& x : a) x = a_of(rng);
+    sb::event_detail::CommonSlopeSum sum;
+    sum.reset(a.data(), static_cast<int>(a.size()), s);
+    int checked = 0;
+    for (double tau0 = 0.0; tau0 < 1.0; tau0 += 0.0137) {
+      const double dt = 1e-4;
+      const long m = 37;
+      const int p = sum.crossed(tau0);
+      if (sum.crossed(tau0 + (m - 1) * dt) != p) continue;  // a crossing inside: not summable
+      double abs_ref = 0, signed_ref = 0, sum_tau = 0;
+      for (long j = 0; j < m; ++j) {
+        double x, y;
+        sum.at(tau0 + j * dt, x, y);
+        abs_ref += x, signed_ref += y, sum_tau += tau0 + j * dt;
+      }
+      double sum_abs, sum_signed;
+      sum.sums(p, m, sum_tau, sum_abs, sum_signed);
+      EXPECT_NEAR(sum_abs, abs_ref, 1e-12 * (1 + abs_ref)) << "s " << s << " tau0 " << tau0;
+      EXPECT_NEAR(sum_signed, signed_ref, 1e-12 * (1 + std::fabs(signed_ref))) << "s " << s << " tau0 " << tau0;
+      ++checked;
+    }
+    EXPECT_GT(checked, 50);
+  }
+}
+
 // Sum of |f| and f over the contact blocks from positions, as FrictionObserver::sample does.
 void sums_from_rows(const sb::Chain& c, const sb::State& s, double& sum_abs, double& sum_signed) {
   sum_abs = sum_signed = 0;
@@ -86,6 +116,73 @@ TEST(QuietPhaseSums, EqualTheWrittenRowsForces) {
         if (contact[i]) signs_changed += (c.driving_force(i, row.u.data(), row.v.data(), row.t) > 0) != (f0[i] > 0);
   }
   EXPECT_GT(signs_changed, 0) << "the scene should make some stuck block's force change sign";
+}
+
+TEST(QuietPhaseSums, WindowSumsEqualTheSamplesSummedOneByOne) {
+  // The same scene: blocks of 64 samples summed in closed form (window_sums) against
+  // friction_sums added sample by sample; a block in which some force may change sign is
+  // refused (and must be one: the scene makes forces change sign), and the sums of a block do not
+  // depend on what was sampled before it.
+  const std::vector<std::uint8_t> contact = {0, 1, 1, 0, 0, 1, 0, 1, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0};
+  const int N = static_cast<int>(contact.size());
+  const sb::Chain c = sbtest::hand_chain(contact, 7.3e5, 1e4, std::vector<double>(N, 1e9), std::vector<double>(N, 0.0));
+  sb::State s = sb::State::at_rest(c);
+  const double dt = 1e-5;
+  s.t = 1000 * dt;
+  for (int i = 0; i < N; ++i) {
+    s.u[i] = c.v_slider * s.t + 1e-9 * std::sin(0.7 + 1.3 * i);
+    s.v[i] = contact[i] ? 0.0 : 0.03 * std::cos(2.0 + i);
+  }
+  sb::event_detail::QuietPhase q(c), ref(c);
+  for (auto* p : {&q, &ref}) {
+    p->set_sample_dt(dt);
+    p->set_sample_scales(1e-14, 1e-10);
+    p->begin(c, s.t, s.u.data(), s.v.data());
+  }
+  double scale = 0;
+  for (int i = 0; i < N; ++i)
+    if (contact[i]) scale += std::fabs(c.driving_force(i, s.u.data(), s.v.data(), s.t));
+  const long n = sb::event_detail::QuietPhase::kSampleBlock;
+  int taken = 0, refused = 0;
+  sb::State row = s;
+  for (long k0 = 1000; k0 < 1000 + 40 * n; k0 += n) {  // 25 ms: ringing, cut, affine
+    double sum_abs, sum_signed;
+    const bool ok = q.window_sums(k0, dt, n, sum_abs, sum_signed);
+    double abs_ref = 0, signed_ref = 0;
+    std::vector<int> sign(N, 0);
+    bool sign_kept = true;  // every force keeps one sign over the block
+    for (long k = k0; k < k0 + n; ++k) {
+      row.t = static_cast<double>(k) * dt;
+      ref.advance_sample(row.t, true);
+      double x, y;
+      ref.friction_sums(row.t, x, y);
+      abs_ref += x, signed_ref += y;
+      ref.write_sample(row.t, row.u.data(), row.v.data(), true);
+      for (int i = 0; i < N; ++i) {
+        if (!contact[i]) continue;
+        const int sg = c.driving_force(i, row.u.data(), row.v.data(), row.t) >= 0 ? 1 : -1;
+        sign_kept = sign_kept && (sign[i] == 0 || sign[i] == sg);
+        sign[i] = sg;
+      }
+    }
+    if (!ok) {
+      ++refused;
+      continue;
+    }
+    ++taken;
+    EXPECT_TRUE(sign_kept) << "block at " << k0 << " summed although a force changes sign in it";
+    // Round-off of sums of ~n samples, relative to their size.
+    EXPECT_NEAR(sum_abs, abs_ref, 1e-14 * (std::fabs(abs_ref) + n * scale)) << "block at " << k0;
+    EXPECT_NEAR(sum_signed, signed_ref, 1e-14 * (std::fabs(abs_ref) + n * scale)) << "block at " << k0;
+    // Sampling other times in between changes nothing.
+    q.advance_sample(static_cast<double>(k0 + 3) * dt, true);
+    double again_abs, again_signed;
+    ASSERT_TRUE(q.window_sums(k0, dt, n, again_abs, again_signed));
+    EXPECT_EQ(again_abs, sum_abs);
+    EXPECT_EQ(again_signed, sum_signed);
+  }
+  EXPECT_GT(taken, 10);
+  EXPECT_GT(refused, 0) << "a block where some force changes sign must be refused";
 }
 
 }  // namespace

@@ -51,10 +51,11 @@ void expect_consistent_counts(const Scene& sc) {
   const auto res = run_ensemble(timed);
   for (const auto& r : res.runs) {
     const WorkProfile& w = r.work;
-    // Every sample time in (0, t_end] is served once, one by one or in a stretch (the sample at
+    // Every sample time in (0, t_end] is served once, one by one, in an affine stretch or in a
+    // block summed over the modes (the sample at
     // t = 0 is the run's start, not counted).
     const auto expected = static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
-    EXPECT_EQ(w.samples + w.stretch_samples, expected);
+    EXPECT_EQ(w.samples + w.stretch_samples + w.summed_samples, expected);
     // A switch is a start or a stop, and a block stops only after it started.
     EXPECT_GT(w.slip_starts, 0);
     EXPECT_GE(r.switches, w.slip_starts);

@@ -63,6 +63,31 @@ long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, l
   return static_cast<long>(reached_min - k0);
 }
 
+long FanOut::sample_sums(const Chain& c, const State& s, long k0, double dt, long n, SampleStretch& stretch) {
+  if (n <= 0) return 0;
+  const long long k_stop = static_cast<long long>(k0) + n;
+  auto t_of = [dt](long long k) { return static_cast<double>(k) * dt; };
+  long long reached_min = k_stop;
+  for (auto& v : views_) {
+    if (v.obs->wants_stop()) continue;
+    // The samples its own run would offer (strictly before its end, as for sample_affine).
+    long long hi = std::min<long long>(k_stop, static_cast<long long>(std::floor(v.t_end / dt)) + 2);
+    while (hi > k0 && !(t_of(hi - 1) < v.t_end)) --hi;
+    const long long lo = std::max<long long>(k0, v.next_k);
+    long long reached = lo;
+    if (lo == k0 && hi == k_stop && v.obs->sample_sums(c, s, k0, dt, n, stretch) == n) {
+      v.next_k = k_stop;
+      record(v, s);
+      reached = k_stop;
+    }
+    // Past its end inside the block a view needs nothing more from it, unless its next sample
+    // (one exactly at its end) is inside: that one it takes from sample().
+    if (reached >= hi && !(reached < k_stop && within_(t_of(reached), v.t_end))) reached = k_stop;
+    reached_min = std::min(reached_min, reached);
+  }
+  return static_cast<long>(reached_min - k0);
+}
+
 bool FanOut::needs_positions_at(double t) const {
   const long long k = index_of(t);
   return std::any_of(views_.begin(), views_.end(), [&](const View& v) {

@@ -42,6 +42,10 @@ class FanOut final : public Observer {
   void sample(const Chain& chain, const State& state) override;
   long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n, const double* a,
                      const double* b) override;
+  // A view is offered the block only as a run of its own would offer it: whole, and only if it
+  // ends before the view's end; views that take it skip its samples, which the integrator then
+  // serves one by one to the others if any declined.
+  long sample_sums(const Chain& chain, const State& state, long k0, double dt, long n, SampleStretch& stretch) override;
   // The run stops when every view wants it to; a view that wants to stop gets no more samples.
   bool wants_stop() const override;
   bool reads_groove_interiors() const override;

@@ -142,6 +142,34 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   return taken;
 }
 
+long FrictionObserver::sample_sums(const Chain& c, const State&, long k0, double dt, long n,
+                                   SampleStretch& stretch) {
+  if (!slipped_ || n <= 0 || contacts_.empty() || wants_stop()) return 0;
+  auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
+  const double t_win = t_slip_ + cfg_.mu_d_skip_s;
+  const bool before = t_of(k0 + n - 1) < t_win, inside = t_of(k0) >= t_win;
+  if (!before && !inside) return 0;
+  if (inside) {
+    double sum_abs, sum_signed;
+    if (!stretch.sums(k0, n, sum_abs, sum_signed)) return 0;
+    sum_mu_ += sum_abs / cfg_.F_load;
+    sum_mu_signed_ += sum_signed / cfg_.F_load;
+    n_window_ += n;
+  }
+  const long k_end = k0 + n;
+  if (cfg_.keep_series || stress_due(t_of(k_end - 1)))
+    for (long k = k0; k < k_end; ++k) {
+      const State& s = stretch.at(k);
+      // The values sample() would record for the series (nothing slides in such a block).
+      if (cfg_.keep_series)
+        series_.push_back({s.t, s.presummed.abs / cfg_.F_load, s.presummed.signed_sum / cfg_.F_load, 0});
+      while (stress_due(s.t)) add_snapshot(c, s.t, [&](int i) { return friction_force(c, s, i); });
+    }
+  last_t_ = t_of(k_end - 1);
+  if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
+  return n;
+}
+
 bool FrictionObserver::stress_due(double t) const {
   return next_stress_ < cfg_.stress_times_s.size() && t >= cfg_.stress_times_s[next_stress_];
 }

@@ -49,6 +49,12 @@ class FrictionObserver final : public Observer {
   // closed-form sums over the samples, O(1) per sample instead of O(contact blocks).
   long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n, const double* a,
                      const double* b) override;
+  // After loading, mu_s is fixed and only the mu_d window's sums are still to come: a block of
+  // samples before the window is taken without a value, one inside it as its sums, one across
+  // the window's start is left to sample(). The series and snapshots of a block taken come from
+  // SampleStretch::at, and do not change the sums.
+  long sample_sums(const Chain& chain, const State& state, long k0, double dt, long n,
+                   SampleStretch& stretch) override;
   bool wants_stop() const override;
   // mu(t) and stress snapshots need only contact blocks' forces (their own and their direct
   // neighbours' positions); groove interiors are never read.

@@ -6,6 +6,20 @@
 
 namespace sb {
 
+// A stretch of samples an integrator can sum without visiting each one (a quiet phase's: see
+// QuietPhase::window_sums), offered to observers that need only time averages.
+class SampleStretch {
+ public:
+  virtual ~SampleStretch() = default;
+  // The sums over samples k0 .. k0 + n - 1 of sum_i |f_i| and sum_i f_i (friction forces of the
+  // contact blocks); false when they cannot be had in closed form (then nothing is summed).
+  virtual bool sums(long k0, long n, double& sum_abs, double& sum_signed) = 0;
+  // The state at sample k, its friction sums in State::presummed and, where the observer's
+  // needs_positions_at says so, its positions: for a series or a snapshot. Does not change what
+  // sums() gives.
+  virtual const State& at(long k) = 0;
+};
+
 class Observer {
  public:
   virtual ~Observer() = default;
@@ -37,6 +51,16 @@ class Observer {
   virtual long sample_affine(const Chain&, const State&, long k0, double dt, long n, const double* a,
                              const double* b) {
     (void)k0, (void)dt, (void)n, (void)a, (void)b;
+    return 0;
+  }
+  // A block of samples t_k = k dt, k = k0 .. k0 + n - 1, inside which nothing switches, offered
+  // as a SampleStretch. An observer takes all of them (returns n) or none (returns 0; the
+  // integrator then serves them one by one with sample()); whether it takes them must not
+  // depend on how earlier samples came, so that a trajectory shared by several observers gives
+  // each the result of its own run (FanOut). s carries s.dir, the slip counters and the work
+  // counters. The default takes none.
+  virtual long sample_sums(const Chain&, const State&, long k0, double dt, long n, SampleStretch& stretch) {
+    (void)k0, (void)dt, (void)n, (void)stretch;
     return 0;
   }
 };

@@ -28,6 +28,23 @@ void CommonSlopeSum::reset(const double* a, int n, double s) {
   for (std::size_t p = 0; p < opp_mag_.size(); ++p) opp_prefix_[p + 1] = opp_prefix_[p] - sgn_ * opp_mag_[p];
 }
 
+int CommonSlopeSum::crossed(double tau) const {
+  if (s_ == 0) return 0;
+  return static_cast<int>(std::upper_bound(opp_mag_.begin(), opp_mag_.end(), std::fabs(s_ * tau)) - opp_mag_.begin());
+}
+
+void CommonSlopeSum::sums(int p, long m, double sum_tau, double& sum_abs, double& sum_signed) const {
+  const double mm = static_cast<double>(m), st = s_ * sum_tau;
+  sum_signed = all_a_ * mm + n_ * st;
+  if (s_ == 0) {
+    sum_abs = abs_const_ * mm;
+    return;
+  }
+  const int n_opp = static_cast<int>(opp_mag_.size());
+  const double crossed = opp_prefix_[p], waiting = opp_prefix_[n_opp] - crossed;
+  sum_abs = sgn_ * (((same_a_ + crossed) * mm + (n_same_ + p) * st) - (waiting * mm + (n_opp - p) * st));
+}
+
 void CommonSlopeSum::at(double tau, double& sum_abs, double& sum_signed) const {
   const double st = s_ * tau;
   sum_signed = all_a_ + n_ * st;

@@ -17,6 +17,11 @@ class CommonSlopeSum {
   void reset(const double* a, int n, double s);
   // Sum over k of |a_k + s tau| and of a_k + s tau, for any tau >= 0.
   void at(double tau, double& sum_abs, double& sum_signed) const;
+  // How many forces have changed sign by tau (at()'s count).
+  int crossed(double tau) const;
+  // The sums of at() over m times whose own sum is sum_tau, all with crossed(tau) == p: both
+  // sums are then affine in tau, so they add up in closed form.
+  void sums(int p, long m, double sum_tau, double& sum_abs, double& sum_signed) const;
 
  private:
   double s_ = 0, sgn_ = 1;

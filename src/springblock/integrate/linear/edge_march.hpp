@@ -19,10 +19,24 @@
 //    at 2^-kMaxDepth of a grid step: a touch that exceeds the threshold by less than
 //    M2 (H 2^-kMaxDepth)^2 / 8 is below resolution, the same limit as the bisection of the
 //    Dormand-Prince event search (round-off in t);
-//  * refinement of a bracket to round-off in t (direct evaluations): Newton on the gap, whose
-//    slope every evaluation gives, kept inside the bracket by regula falsi and bisection.
+//  * refinement of a bracket to round-off in t: Newton on the gap, whose slope every evaluation
+//    gives, kept inside the bracket by regula falsi and bisection. A bracket, and a grazing
+//    search, never spans more than one grid step from the point whose modes the march holds, so
+//    F there is a Taylor polynomial about that point: each mode's derivatives follow from the
+//    recurrence q^(j+2) = -gamma q^(j+1) - omega^2 q^(j), and with every mode's fastest rate r
+//    satisfying r H <= 1 the remainder of order kTaylor is below (r H)^(kTaylor+1) / (kTaylor+1)!
+//    ~ 2e-20 of the modal amplitude, under round-off. An evaluation then costs kTaylor flops
+//    instead of an exp and a sincos per mode. The polynomial's round-off differs from the direct
+//    evaluation's, so its root is confirmed by one direct evaluation: the returned point is
+//    crossed by the closed form itself (and the refinement goes on by direct evaluations in
+//    the rare case it is not). Modes faster than that (strong overdamping) keep the direct
+//    evaluations throughout.
 // Every mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it), so the bounds
-// taken at one point hold for all later times.
+// taken at one point hold for all later times. They cost a sqrt per mode, so the march takes
+// them afresh only every kBounds grid steps (and at every direct evaluation) and otherwise uses
+// the last ones, which are larger but valid; the grazing test, where a looser bound would cost
+// direct evaluations, retakes them at the interval's start whenever the stale ones trigger it,
+// so its decisions are those of fresh bounds.
 // With an open origin the event function may start on the threshold (a block that has just
 // started to slide, v = 0): tau = 0 is then not an event, the first grid interval is searched
 // for a sign change only, and the provable skips start from the first grid point.
@@ -63,23 +77,29 @@ class EdgeMarch {
   // After first_crossing returned +inf: true if the search stopped at tau_limit (a crossing may
   // follow later), false if none can ever follow.
   bool hit_limit = false;
-  // Diagnostics of the last searches: direct (transcendental) evaluations and grid steps.
-  long direct_evals = 0, grid_steps = 0;
+  // Diagnostics of the last searches: direct (transcendental) evaluations, grid steps and
+  // evaluations of the local Taylor polynomial.
+  long direct_evals = 0, grid_steps = 0, local_evals = 0;
 
  private:
+  static constexpr int kTaylor = 20;  // order of the local polynomial (see the header)
   struct Mode {
     double w, omega, m2;  // weight, sqrt(omega^2), (omega + gamma) for the |q''| bound
+    double rate;          // largest |eigenvalue| of the mode: omega, or alpha + kappa if overdamped
     DampedMode mode;
     double p00, p01, p10, p11;  // [q, qd](tau + H) = P [q, qd](tau)
     int index;
   };
-  struct Sums {
-    double F, dF, mb, sb, m2;  // F, dF/dtau, bounds on |modal F|, |modal dF|, |F''|
+  struct Bounds {
+    double mb, sb, m2;  // bounds on |modal F|, |dF| (affine slope included), |F''|
   };
-  void direct(const double* q0, const double* p0, double tau);  // q_, qd_ at tau
-  void grid_step();                                              // q_, qd_ advanced by H
-  Sums sums(double tau) const;
-  double force(const double* q0, const double* p0, double tau);  // F only, direct
+  // The modes at tau into q, qd (one exp and sincos per mode).
+  void direct(const double* q0, const double* p0, double tau, double* q, double* qd);
+  void direct(const double* q0, const double* p0, double tau) { direct(q0, p0, tau, q_.data(), qd_.data()); }
+  void grid_step();                                              // qn_, qdn_ = q_, qd_ advanced by H
+  double force_at(double tau, const double* q) const;            // a + b tau + sum w q
+  Bounds bounds(const double* q, const double* qd) const;        // from the modes' energies
+  double force(const double* q0, const double* p0, double tau);  // F only, direct (scratch state)
   // The gap fs - measure(F) at tau and its slope, from one direct evaluation (dF is the modes'
   // velocities summed: no extra exp or sincos).
   void gap(const double* q0, const double* p0, double fs, double tau, double& g, double& dg);
@@ -93,15 +113,31 @@ class EdgeMarch {
   // (safeguarded Newton, Illinois regula falsi and bisection as fallbacks).
   double refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                 double ghi);
+  // The iteration of refine; x, gx, dgx: an evaluation inside the bracket to start Newton from
+  // (x = +inf: none).
+  double shrink(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
+                double ghi, double x, double gx, double dgx);
   bool graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi, double Fhi,
              double m2, int depth, double& where);
+  // The Taylor polynomial of F about tau_base (local_ = true), if the modes allow it
+  // (taylor_ok_), from one direct evaluation there: the march's own modes carry the grid
+  // recurrence's round-off, up to ~1e-13 of them, far above what a root to round-off needs.
+  // F and dF at tau in [tau_base, tau_base + H] from it.
+  void expand(const double* q0, const double* p0, double tau_base);
+  void local_eval(double tau, double& F, double& dF);
 
   std::vector<Mode> modes_;
-  std::vector<double> q_, qd_;
+  std::vector<double> q_, qd_;    // the modes at the march's current point
+  std::vector<double> qn_, qdn_;  // at the next grid point
+  std::vector<double> qs_, qds_;  // scratch of the grazing search's direct evaluations
   double a_ = 0, b_ = 0, H_ = 0;
   Sense sense_ = Sense::Abs;
   bool open_ = false;
   int budget_ = 0;  // direct evaluations left for the current grazing search
+  bool taylor_ok_ = false;  // every mode's rate r has r H <= 1 (set by finish)
+  bool local_ = false;      // gap() and force() read the Taylor polynomial
+  double base_ = 0;         // its point
+  double coef_[kTaylor + 1] = {};  // its coefficients, F = sum coef_j (tau - base_)^j
 };
 
 }  // namespace sb::event_detail

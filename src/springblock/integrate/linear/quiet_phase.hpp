@@ -55,6 +55,11 @@ class QuietPhase {
   void set_sample_dt(double dt);
   // sample() in two halves: the modal coordinates brought to sample time t, then the rows
   // written from them (write_sample needs the advance_sample of the same t before it).
+  // The recurrence restarts from the closed form at the phase's first sample, after a gap in
+  // the spacing, and at every sample whose index is a multiple of kSampleBlock: a sample's value
+  // then depends only on its index and the phase, not on which samples were served before it
+  // (window_sums may stand in for a whole block of them).
+  static constexpr long kSampleBlock = 64;
   void advance_sample(double t, bool ends_only);
   void write_sample(double t, double* u, double* v, bool ends_only) const;
   // For an observer of mu(t) alone, after advance_sample(t, true): the sums over the contact
@@ -63,6 +68,16 @@ class QuietPhase {
   // its segments' end rows' modes (the settle-scale cut of ends_only samples applies). Rounds
   // differently from summing the forces of the written rows, not otherwise different.
   void friction_sums(double t, double& sum_abs, double& sum_signed);
+  // The same two sums added over the n samples at t_k = k dt, k = k0 .. k0 + n - 1, in closed
+  // form, when no contact block's force can change sign over them (each |f_i| is then +-f_i,
+  // and f_i is affine plus modes, whose sum over equally spaced samples is a geometric series:
+  // RunBasis::sample_sum). Costs two direct evaluations of each live mode instead of a
+  // recurrence step and a dot product per mode and sample. The modes are cut where samples cut
+  // them (sample_dead_tau), so the sums are those of friction_sums over the same samples up to
+  // round-off. False (nothing summed) when a force may change sign or a mode has no closed-form
+  // sum. Leaves the sample cursor alone; the sums depend on k0 and n only, not on what was
+  // sampled before.
+  bool window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
 
   struct Next {
     double t;   // event time, or t_limit when no stuck block reaches its threshold before it
@@ -132,11 +147,12 @@ class QuietPhase {
   std::vector<int> order_;        // edges by increasing lower bound
   double sample_dt_ = 0, ts_ = 0;
   double sample_eps_u_ = 0, sample_eps_v_ = 0;
-  int since_sync_ = 0;
   bool sample_valid_ = false;
   CommonSlopeSum interior_;        // friction_sums: the contact blocks with no groove neighbour
   bool interior_ready_ = false;    // interior_ holds this phase's forces
   std::vector<double> end_dots_;   // friction_sums: per segment, first and last row . q
+  std::vector<double> wq_, wp_, wq1_, wp1_;  // window_sums: modes at the first sample and past the last live one
+  std::vector<double> end_bound_;  // window_sums: per segment, bounds on its first and last rows' modal part
 };
 
 }  // namespace sb::event_detail

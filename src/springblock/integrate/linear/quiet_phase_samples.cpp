@@ -85,10 +85,9 @@ void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
 void QuietPhase::advance_sample(double t, bool ends_only) {
   const double tau = t - t0_;
   // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
-  // from that by round-off only. Restart from the closed form every 64 samples regardless.
+  // from that by round-off only. Restart from the closed form at every block start (header).
   const bool step = sample_valid_ && sample_dt_ > 0 && std::fabs((t - ts_) - sample_dt_) <= 1e-9 * sample_dt_ &&
-                    ++since_sync_ < 64;
-  if (!step) since_sync_ = 0;
+                    std::llround(t / sample_dt_) % kSampleBlock != 0;
   for (const GrooveRun& s : segs_) {
     // An observer that reads only contact forces (ends_only) takes the modes as gone once they
     // are below the settle scales; one that reads every row gets them to round-off.

@@ -30,6 +30,11 @@ struct RunBasis {
   // Per mode: the exact transition over the sample spacing (RunBases::set_sample_dt), so
   // consecutive samples advance the modes without transcendental calls.
   std::vector<Transition> sample;
+  // Per mode: the first row of (I - P)^-1, P its sample transition. The sum of q over m
+  // consecutive samples from state x is that row times (x - P^m x), the geometric series of
+  // the transition in closed form (QuietPhase::window_sums). NaN where I - P is too near
+  // singular for it (|det| < 1e-6: an undamped mode that turns by a multiple of 2 pi).
+  std::vector<std::array<double, 2>> sample_sum;
   int n() const { return static_cast<int>(modes.size()); }
 };
 
@@ -44,6 +49,7 @@ class RunBases {
   int size() const { return static_cast<int>(bases_.size()); }
 
  private:
+  static void set_sample_transitions(RunBasis& b, double dt);
   double K_s_, K_int_, m_, gamma_, sample_dt_ = 0;
   std::map<std::tuple<int, bool, bool>, RunBasis> bases_;
 };

@@ -8,6 +8,22 @@
 #include "springblock/integrate/methods/event_run.hpp"
 
 namespace sb::event_detail {
+namespace {
+
+// A SampleStretch from two callables (the quiet phase's sums, one sample's state).
+template <class Sums, class At>
+class StretchOf final : public SampleStretch {
+ public:
+  StretchOf(Sums sums, At at) : sums_(std::move(sums)), at_(std::move(at)) {}
+  bool sums(long k0, long n, double& sum_abs, double& sum_signed) override { return sums_(k0, n, sum_abs, sum_signed); }
+  const State& at(long k) override { return at_(k); }
+
+ private:
+  Sums sums_;
+  At at_;
+};
+
+}  // namespace
 
 bool EventRun::quiet_phase() {
   // A quiet phase that follows sliding closes a slip event (the work profile's unit).
@@ -58,6 +74,11 @@ bool EventRun::serve_quiet_samples(double t_next) {
         continue;
       }
     }
+    bool stopped = false;
+    if (ends_only_ && offer_block(std::min(t_next, dead_after), stopped)) {
+      if (stopped) return false;
+      continue;
+    }
     sample_.t = clock_.next();
     serve_quiet_sample();
     clock_.advance();
@@ -86,6 +107,44 @@ void EventRun::serve_quiet_sample() {
     quiet_->write_sample(sample_.t, sample_.u.data(), sample_.v.data(), ends_only_);
   obs_.sample(c_, sample_);
   sample_.presummed.valid = false;
+}
+
+// A whole block of QuietPhase::kSampleBlock samples, from an aligned index and ending before
+// t_stop, offered as closed-form sums (Observer::sample_sums); false when it was not taken.
+bool EventRun::offer_block(double t_stop, bool& stopped) {
+  const long long k0 = clock_.index();
+  const long n = QuietPhase::kSampleBlock;
+  if (k0 % n != 0 || !(clock_.time_of(k0 + n - 1) < t_stop)) return false;
+  const double dt = clock_.dt();
+  StretchOf block(
+      [&](long k, long m, double& sum_abs, double& sum_signed) {
+        return quiet_->window_sums(k, dt, m, sum_abs, sum_signed);
+      },
+      [&](long k) -> const State& {
+        sample_.t = clock_.time_of(k);
+        stamp_sample();
+        quiet_->advance_sample(sample_.t, true);
+        sample_.presummed.valid = true;
+        quiet_->friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
+        sample_.presummed.n_sliding = 0;
+        if (obs_.needs_positions_at(sample_.t))
+          quiet_->write_sample(sample_.t, sample_.u.data(), sample_.v.data(), true);
+        return sample_;
+      });
+  sample_.t = clock_.next();
+  stamp_sample();
+  const long used = obs_.sample_sums(c_, sample_, static_cast<long>(k0), dt, n, block);
+  sample_.presummed.valid = false;
+  if (used <= 0) return false;
+  s_.work.summed_samples += used;
+  clock_.advance(used);
+  if (obs_.wants_stop()) {
+    const double t_last = clock_.time_of(clock_.index() - 1);
+    quiet_->evaluate(t_last, s_.u.data(), s_.v.data());
+    s_.t = t_last;
+    stopped = true;
+  }
+  return true;
 }
 
 bool EventRun::sample_affine_stretch(double t_next, bool& stopped) {

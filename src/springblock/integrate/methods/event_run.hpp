@@ -74,6 +74,8 @@ class EventRun {
   // Quiet-phase samples once every groove has rung down: one affine stretch (returns false when
   // the observer took none, so the caller samples one by one).
   bool sample_affine_stretch(double t_next, bool& stopped);
+  // A block of quiet-phase samples taken as sums over the modes (event_quiet.cpp).
+  bool offer_block(double t_stop, bool& stopped);
 
   const Chain& c_;
   State& s_;

@@ -1,0 +1,99 @@
+// The quiet phase's samples summed in closed form (QuietPhase::window_sums): what an observer of
+// time averages alone needs from a stretch of samples, without visiting each one.
+//
+// Over samples tau_j = tau_0 + j dt a contact block's force is f = fa + fb tau + K_int (end rows
+// of its groove segments' modes). Where no f changes sign, sum_j |f| = sign(f) sum_j f, and
+//   sum_j (fa + fb tau_j)  is m fa + fb sum_j tau_j,
+//   sum_j q_k(tau_j)       is the geometric series of mode k's sample transition P:
+//                          (I - P)^-1 (x_0 - x_m), x_j = (q_k, q_k')(tau_j) (first row only).
+// A force keeps its sign while its affine part stays further from zero than the modes can
+// reach: each mode's energy never grows, so the bound taken at tau_0 holds throughout, and an
+// affine part is monotone, so checking the last sample checks them all. The contact blocks with
+// no groove neighbour have affine forces of one common slope (CommonSlopeSum): they keep their
+// signs while no one of them crosses zero.
+#include <algorithm>
+#include <cmath>
+
+#include "springblock/integrate/linear/quiet_phase.hpp"
+
+namespace sb::event_detail {
+
+bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
+  sum_abs = sum_signed = 0;
+  if (n <= 0) return false;
+  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
+  const double tau0 = tau_of(k0), tau_last = tau_of(k0 + n - 1);
+  if (!interior_ready_) {
+    interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
+    interior_ready_ = true;
+  }
+  // Interior forces: none crosses zero inside the stretch.
+  const int p0 = interior_.crossed(tau0);
+  if (interior_.crossed(tau_last) != p0) return false;
+  // The live segments' modes at tau0, and bounds on their end rows' modal part from then on.
+  for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
+    const GrooveRun& s = segs_[sgi];
+    end_bound_[2 * sgi] = end_bound_[2 * sgi + 1] = 0.0;
+    if (!(tau0 <= s.sample_dead_tau)) continue;
+    const RunBasis& d = *s.basis;
+    double* q = wq_.data() + s.offset;
+    double* p = wp_.data() + s.offset;
+    DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau0,
+                         [&](int k, const DampedMode& md, double e) {
+                           md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau0, e, q[k], p[k]);
+                         });
+    for (int k = 0; k < s.n; ++k) {
+      if (std::isnan(d.sample_sum[k][0])) return false;  // no closed-form sum for this mode
+      const double amp = std::sqrt((p[k] * p[k] + d.modes[k].omega2 * q[k] * q[k]) / d.modes[k].omega2);
+      end_bound_[2 * sgi] += std::fabs(d.first_row[k]) * amp;
+      end_bound_[2 * sgi + 1] += std::fabs(d.last_row[k]) * amp;
+    }
+  }
+  // Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at
+  // both ends of the stretch (so everywhere between).
+  for (const Edge& e : edges_) {
+    double reach = 0;
+    for (int r = 0; r < e.nseg; ++r) reach += K_int_ * end_bound_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
+    const double f0 = e.fa + e.fb * tau0, sg = f0 >= 0 ? 1.0 : -1.0;
+    if (!(sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach)) return false;
+  }
+  // Each live segment's end rows summed over its live samples (those with tau <= sample_dead_tau,
+  // as friction_sums counts them).
+  for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
+    const GrooveRun& s = segs_[sgi];
+    end_dots_[2 * sgi] = end_dots_[2 * sgi + 1] = 0.0;
+    if (!(tau0 <= s.sample_dead_tau)) continue;
+    long live = n;
+    while (live > 0 && !(tau_of(k0 + live - 1) <= s.sample_dead_tau)) --live;  // rare: dies in the stretch
+    const RunBasis& d = *s.basis;
+    const double tau1 = tau_of(k0 + live);
+    double* q1 = wq1_.data() + s.offset;
+    double* p1 = wp1_.data() + s.offset;
+    DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau1,
+                         [&](int k, const DampedMode& md, double e) {
+                           md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau1, e, q1[k], p1[k]);
+                         });
+    const double* q = wq_.data() + s.offset;
+    const double* p = wp_.data() + s.offset;
+    double first = 0, last = 0;
+    for (int k = 0; k < s.n; ++k) {
+      const double Sq = d.sample_sum[k][0] * (q[k] - q1[k]) + d.sample_sum[k][1] * (p[k] - p1[k]);
+      first += d.first_row[k] * Sq, last += d.last_row[k] * Sq;
+    }
+    end_dots_[2 * sgi] = first, end_dots_[2 * sgi + 1] = last;
+  }
+  // The affine parts: sum of the sample times, sum_j (k dt - t0) with the sum of k exact in
+  // integers.
+  const double mm = static_cast<double>(n);
+  const double st = dt * (0.5 * static_cast<double>(2 * k0 + n - 1) * mm) - mm * t0_;
+  interior_.sums(p0, n, st, sum_abs, sum_signed);
+  for (const Edge& e : edges_) {
+    double f = e.fa * mm + e.fb * st;
+    for (int r = 0; r < e.nseg; ++r) f += K_int_ * end_dots_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
+    sum_abs += e.fa + e.fb * tau0 >= 0 ? f : -f;  // every sample's sign (checked above)
+    sum_signed += f;
+  }
+  return true;
+}
+
+}  // namespace sb::event_detail
