@@ -299,6 +299,33 @@ TEST(EventIntegrator, ModalGrooveRunsAgreeWithStepping) {
   }
 }
 
+// One scene (periodic:4,16, N = 120, 3 t0, after loading too) run twice by the event method,
+// each run with its own observer: the switching logs and end states of both.
+struct PairedRuns {
+  sb::Scene sc;
+  sb::Chain c;
+  sb::FrictionObserverConfig cfg;
+  std::vector<double> log[2];
+  sb::State state[2];
+  PairedRuns() : sc(small_scene(120, "periodic:4,16")) {
+    sc.run.stop_after_mu_s = false;
+    sc.run.duration_t0 = 3.0;
+    c = sb::build_chain(sc, 0);
+    cfg.F_load = c.F_load;
+    cfg.peak_drop = sc.rules.peak_drop;
+    cfg.mu_d_skip_s = 0.25 * sc.t0_s();
+  }
+  void run(sb::Observer& a, sb::Observer& b) {
+    sb::Observer* obs[2] = {&a, &b};
+    for (int k = 0; k < 2; ++k) {
+      sb::EventDriven e(1e-9);
+      e.set_switch_log(&log[k]);
+      state[k] = sb::State::at_rest(c);
+      e.run(c, state[k], sc.duration(), sc.run.sample_dt_s, *obs[k]);
+    }
+  }
+};
+
 // The same friction observer, but asking for every groove row: quiet-phase samples then keep
 // the groove modes to round-off instead of dropping them below the settle scales.
 class EveryRow final : public sb::Observer {
@@ -319,23 +346,12 @@ TEST(EventIntegrator, SampleScalesChangeNoResult) {
   // and decays after, so the sampled mu_s and mu_d must stay within 1e-3 of the stepper's
   // tolerance (1e-12) of the samples that keep it (measured: equal to all 15 digits; scales
   // 1e6 times larger move mu_d by 5e-11 and fail).
-  sb::Scene sc = small_scene(120, "periodic:4,16");
-  sc.run.stop_after_mu_s = false;
-  sc.run.duration_t0 = 3.0;
-  const sb::Chain c = sb::build_chain(sc, 0);
-  sb::FrictionObserverConfig cfg;
-  cfg.F_load = c.F_load;
-  cfg.peak_drop = sc.rules.peak_drop;
-  cfg.mu_d_skip_s = 0.25 * sc.t0_s();
-  sb::FrictionObserver dropped(cfg), kept(cfg);
+  PairedRuns p;
+  sb::FrictionObserver dropped(p.cfg), kept(p.cfg);
   EveryRow every(kept);
-  sb::EventDriven e1(1e-9), e2(1e-9);
-  std::vector<double> log1, log2;
-  e1.set_switch_log(&log1);
-  e2.set_switch_log(&log2);
-  sb::State s1 = sb::State::at_rest(c), s2 = sb::State::at_rest(c);
-  e1.run(c, s1, sc.duration(), sc.run.sample_dt_s, dropped);
-  e2.run(c, s2, sc.duration(), sc.run.sample_dt_s, every);
+  p.run(dropped, every);
+  const std::vector<double>& log1 = p.log[0];
+  const std::vector<double>& log2 = p.log[1];
   std::printf("periodic:4,16 N=120 3 t0: mu_s %.15f / %.15f  mu_d %.15f / %.15f  window %zu / %zu\n",
               dropped.mu_s(), kept.mu_s(), dropped.mu_d(), kept.mu_d(), dropped.window_samples(),
               kept.window_samples());
@@ -371,23 +387,14 @@ TEST(EventIntegrator, SummedSampleBlocksEqualTheSamplesOneByOne) {
   // the modes (QuietPhase::window_sums). Against the same run serving them one by one: the same
   // switching history (samples never act on the dynamics), mu_s and the window count exactly,
   // mu_d to round-off (the sums of up to 64 samples rounded differently; measured 1e-16).
-  sb::Scene sc = small_scene(120, "periodic:4,16");
-  sc.run.stop_after_mu_s = false;
-  sc.run.duration_t0 = 3.0;
-  const sb::Chain c = sb::build_chain(sc, 0);
-  sb::FrictionObserverConfig cfg;
-  cfg.F_load = c.F_load;
-  cfg.peak_drop = sc.rules.peak_drop;
-  cfg.mu_d_skip_s = 0.25 * sc.t0_s();
-  sb::FrictionObserver summed(cfg), single(cfg);
+  PairedRuns p;
+  sb::FrictionObserver summed(p.cfg), single(p.cfg);
   OneByOne one(single);
-  sb::EventDriven e1(1e-9), e2(1e-9);
-  std::vector<double> log1, log2;
-  e1.set_switch_log(&log1);
-  e2.set_switch_log(&log2);
-  sb::State s1 = sb::State::at_rest(c), s2 = sb::State::at_rest(c);
-  e1.run(c, s1, sc.duration(), sc.run.sample_dt_s, summed);
-  e2.run(c, s2, sc.duration(), sc.run.sample_dt_s, one);
+  p.run(summed, one);
+  const sb::State& s1 = p.state[0];
+  const sb::State& s2 = p.state[1];
+  const std::vector<double>& log1 = p.log[0];
+  const std::vector<double>& log2 = p.log[1];
   ASSERT_TRUE(summed.slipped());
   EXPECT_GT(s1.work.summed_samples, 1000);  // the blocks were taken
   EXPECT_EQ(s2.work.summed_samples, 0);

@@ -33,6 +33,15 @@ void FanOut::sample(const Chain& c, const State& s) {
   }
 }
 
+// A run of its own offers a view the samples strictly before its end at once (a sample exactly at
+// the end comes through sample(), see event_driven.cpp, uncoupled.cpp): one past the last of
+// them in [k0, k_stop).
+long long FanOut::end_index(const View& v, long long k0, long long k_stop, double dt) {
+  long long hi = std::min<long long>(k_stop, static_cast<long long>(std::floor(v.t_end / dt)) + 2);
+  while (hi > k0 && !(static_cast<double>(hi - 1) * dt < v.t_end)) --hi;
+  return hi;
+}
+
 long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, long n, const double* a,
                            const double* b) {
   if (n <= 0) return 0;
@@ -41,11 +50,7 @@ long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, l
   long long reached_min = k_stop;
   for (auto& v : views_) {
     if (v.obs->wants_stop()) continue;
-    // A run of its own offers a view the samples strictly before its end in affine stretches
-    // (a sample exactly at the end comes through sample(), see event_driven.cpp, uncoupled.cpp).
-    long long hi = std::min<long long>(k_stop, static_cast<long long>(std::floor(v.t_end / dt)) + 2);
-    while (hi > k0 && !(t_of(hi - 1) < v.t_end)) --hi;
-    const long long lo = std::max<long long>(k0, v.next_k);
+    const long long hi = end_index(v, k0, k_stop, dt), lo = std::max<long long>(k0, v.next_k);
     long long reached = lo;
     if (lo < hi) {
       const long used = v.obs->sample_affine(c, s, static_cast<long>(lo), dt, static_cast<long>(hi - lo), a, b);
@@ -70,10 +75,7 @@ long FanOut::sample_sums(const Chain& c, const State& s, long k0, double dt, lon
   long long reached_min = k_stop;
   for (auto& v : views_) {
     if (v.obs->wants_stop()) continue;
-    // The samples its own run would offer (strictly before its end, as for sample_affine).
-    long long hi = std::min<long long>(k_stop, static_cast<long long>(std::floor(v.t_end / dt)) + 2);
-    while (hi > k0 && !(t_of(hi - 1) < v.t_end)) --hi;
-    const long long lo = std::max<long long>(k0, v.next_k);
+    const long long hi = end_index(v, k0, k_stop, dt), lo = std::max<long long>(k0, v.next_k);
     long long reached = lo;
     if (lo == k0 && hi == k_stop && v.obs->sample_sums(c, s, k0, dt, n, stretch) == n) {
       v.next_k = k_stop;

@@ -57,6 +57,7 @@ class FanOut final : public Observer {
 
  private:
   long long index_of(double t) const;
+  static long long end_index(const View& v, long long k0, long long k_stop, double dt);
   void record(View& v, const State& s);
 
   std::vector<View> views_;

@@ -109,6 +109,18 @@ void EventRun::serve_quiet_sample() {
   sample_.presummed.valid = false;
 }
 
+// The clock past `used` samples an observer took at once; if it then wants to stop, the state is
+// brought to the last of them.
+void EventRun::took_samples(long used, bool& stopped) {
+  clock_.advance(used);
+  if (obs_.wants_stop()) {
+    const double t_last = clock_.time_of(clock_.index() - 1);
+    quiet_->evaluate(t_last, s_.u.data(), s_.v.data());
+    s_.t = t_last;
+    stopped = true;
+  }
+}
+
 // A whole block of QuietPhase::kSampleBlock samples, from an aligned index and ending before
 // t_stop, offered as closed-form sums (Observer::sample_sums); false when it was not taken.
 bool EventRun::offer_block(double t_stop, bool& stopped) {
@@ -137,13 +149,7 @@ bool EventRun::offer_block(double t_stop, bool& stopped) {
   sample_.presummed.valid = false;
   if (used <= 0) return false;
   s_.work.summed_samples += used;
-  clock_.advance(used);
-  if (obs_.wants_stop()) {
-    const double t_last = clock_.time_of(clock_.index() - 1);
-    quiet_->evaluate(t_last, s_.u.data(), s_.v.data());
-    s_.t = t_last;
-    stopped = true;
-  }
+  took_samples(used, stopped);
   return true;
 }
 
@@ -160,13 +166,7 @@ bool EventRun::sample_affine_stretch(double t_next, bool& stopped) {
                                        fa_.data(), fb_.data());
   if (used <= 0) return false;
   s_.work.stretch_samples += used;
-  clock_.advance(used);
-  if (obs_.wants_stop()) {
-    const double t_last = clock_.time_of(clock_.index() - 1);
-    quiet_->evaluate(t_last, s_.u.data(), s_.v.data());
-    s_.t = t_last;
-    stopped = true;
-  }
+  took_samples(used, stopped);
   return true;
 }
 

@@ -76,6 +76,7 @@ class EventRun {
   bool sample_affine_stretch(double t_next, bool& stopped);
   // A block of quiet-phase samples taken as sums over the modes (event_quiet.cpp).
   bool offer_block(double t_stop, bool& stopped);
+  void took_samples(long used, bool& stopped);
 
   const Chain& c_;
   State& s_;
