@@ -1,14 +1,12 @@
 #include "springblock/integrate/events/active_set.hpp"
+#include "springblock/integrate/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <limits>
 
 namespace sb::event_detail {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // rebuild() runs after every switch, and its scans over all N blocks were a tenth of a table
 // row's time, although a switch changes a handful of blocks. These read 8 blocks' bytes at once

@@ -3,14 +3,11 @@
 // modal sliding block's stop), kept in the EventQueue.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "springblock/integrate/events/active_set.hpp"
+#include "springblock/integrate/infinity.hpp"
 
 namespace sb::event_detail {
-namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
-}
 
 // Closed-form crossings and the kept modal events first, then the fresh modal searches
 // (finish_events).

@@ -1,11 +1,7 @@
 #include "springblock/integrate/events/event_queue.hpp"
-
-#include <limits>
+#include "springblock/integrate/infinity.hpp"
 
 namespace sb::event_detail {
-namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
-}
 
 EventQueue::EventQueue(int N) : N_(N), t_(N, kInf), recheck_(N, 0), dirty_(N, 0) {
   while (P_ < N_) P_ *= 2;

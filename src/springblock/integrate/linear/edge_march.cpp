@@ -1,13 +1,12 @@
 #include "springblock/integrate/linear/edge_march.hpp"
+#include "springblock/integrate/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace sb::event_detail {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Grid step in units of 1 / omega_max: the fastest mode turns by half a radian per step, so
 // the grazing bound M2 H^2 / 8 is ~1/32 of the modal amplitude and rarely needs subdividing.
 constexpr double kGrid = 0.5;

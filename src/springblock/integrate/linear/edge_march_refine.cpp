@@ -2,14 +2,11 @@
 // from a direct evaluation or from the local Taylor polynomial, and the safeguarded Newton
 // iteration on them.
 #include <cmath>
-#include <limits>
 
 #include "springblock/integrate/linear/edge_march.hpp"
+#include "springblock/integrate/infinity.hpp"
 
 namespace sb::event_detail {
-namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
-}  // namespace
 
 void EdgeMarch::expand(const double* q0, const double* p0, double tau_base) {
   local_ = taylor_ok_;

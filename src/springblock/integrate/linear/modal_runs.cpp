@@ -1,5 +1,6 @@
 #include "springblock/integrate/linear/modal_runs.hpp"
 #include "springblock/integrate/linear/envelope.hpp"
+#include "springblock/integrate/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +9,9 @@
 namespace sb::event_detail {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // The sample recurrence restarts from the closed form this often, so its round-off never
 // accumulates (the same rule as the quiet phase's samples).
-constexpr int kResync = 64;
+constexpr int kSampleResync = 64;
 // Round-off margin of a stop, in units of the slider velocity (see the header).
 constexpr double kStopMargin = 1e-12;
 
@@ -177,7 +177,7 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool
     double* sq = cq_.data() + r.lo;  // off-sample evaluations must not move the cursor
     double* sqd = cp_.data() + r.lo;
     const bool step = at_sample && r.cursor && sample_dt_ > 0 &&
-                      std::fabs((t - r.tc) - sample_dt_) <= 1e-9 * sample_dt_ && r.since + 1 < kResync;
+                      std::fabs((t - r.tc) - sample_dt_) <= 1e-9 * sample_dt_ && r.since + 1 < kSampleResync;
     if (step) {
       for (int k = 0; k < n; ++k) {
         const auto& P = r.basis->run->sample[k];

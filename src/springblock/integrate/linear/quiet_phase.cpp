@@ -1,14 +1,12 @@
 #include "springblock/integrate/linear/quiet_phase.hpp"
 #include "springblock/integrate/linear/envelope.hpp"
+#include "springblock/integrate/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace sb::event_detail {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // First tau >= 0 at which an affine force a + b tau reaches +-f (|a| <= f assumed).
 double affine_crossing(double a, double b, double f) {

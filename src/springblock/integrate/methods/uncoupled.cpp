@@ -1,7 +1,6 @@
 #include "springblock/integrate/methods/uncoupled.hpp"
 
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <queue>
 #include <stdexcept>
@@ -10,11 +9,11 @@
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/events/switching.hpp"
 #include "springblock/sample_schedule.hpp"
+#include "springblock/integrate/infinity.hpp"
 
 namespace sb::event_detail {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = std::numbers::pi;
 
 // First zero strictly after `from` of the damped-mode trajectory with q(0) = q0, q'(0) = p0
