@@ -33,12 +33,19 @@ bool EventQueue::earlier_real(int a, int b) const {
 }
 
 void EventQueue::refresh() {
+  // The climb from a changed leaf stops at the first node whose winner, in both trees, is
+  // unchanged and is not block i: no node above it depends on i then. A node whose winner is
+  // another changed block is brought up to date by that block's own climb, which never stops
+  // where its block wins. Every order is total (time, recheck, block), so each node holds the
+  // unique earliest block of its subtree whatever order the climbs take.
   for (int i : dirty_list_) {
     dirty_[i] = 0;
     for (int n = (P_ + i) >> 1; n >= 1; n >>= 1) {
       const int l = 2 * n, r = 2 * n + 1;
-      tree_[n] = earlier(tree_[r], tree_[l]) ? tree_[r] : tree_[l];
-      tree_real_[n] = earlier_real(tree_real_[r], tree_real_[l]) ? tree_real_[r] : tree_real_[l];
+      const int w = earlier(tree_[r], tree_[l]) ? tree_[r] : tree_[l];
+      const int w_real = earlier_real(tree_real_[r], tree_real_[l]) ? tree_real_[r] : tree_real_[l];
+      if (w == tree_[n] && w_real == tree_real_[n] && w != i && w_real != i) break;
+      tree_[n] = w, tree_real_[n] = w_real;
     }
   }
   dirty_list_.clear();
