@@ -140,6 +140,12 @@ void ModalRuns::coords(const Run& r, double t, double* q, double* qd) const {
       [&](int k, const DampedMode& m, double e) { m.eval_decayed(q0_[r.lo + k], p0_[r.lo + k], tau, e, q[k], qd[k]); });
 }
 
+void ModalRuns::scratch_at(Run& r, double t) {
+  if (r.scratch_t == t) return;
+  coords(r, t, cq_.data() + r.lo, cp_.data() + r.lo);
+  r.scratch_t = t;
+}
+
 double ModalRuns::u(int i, double t) const {
   const Run& r = runs_[run_of_[i]];
   const int n = r.hi - r.lo, row = i - r.lo;
@@ -174,8 +180,6 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool
     const int n = r.hi - r.lo;
     double* q = qc_.data() + r.lo;
     double* qd = qdc_.data() + r.lo;
-    double* sq = cq_.data() + r.lo;  // off-sample evaluations must not move the cursor
-    double* sqd = cp_.data() + r.lo;
     const bool step = at_sample && r.cursor && sample_dt_ > 0 &&
                       std::fabs((t - r.tc) - sample_dt_) <= 1e-9 * sample_dt_ && r.since + 1 < kSampleResync;
     if (step) {
@@ -190,8 +194,8 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool
       coords(r, t, q, qd);
       r.since = 0;
     } else {
-      coords(r, t, sq, sqd);
-      q = sq, qd = sqd;
+      scratch_at(r, t);  // off-sample evaluations must not move the cursor
+      q = cq_.data() + r.lo, qd = cp_.data() + r.lo;
     }
     if (at_sample) r.tc = t, r.cursor = true;
     if (ends_only && r.grooves && n > 2) rows(r, t, q, qd, 0, n, n - 1, u, v);
@@ -200,20 +204,18 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool
 }
 
 void ModalRuns::materialise_run(int i, double t, double* u, double* v) {
-  const Run& r = runs_[run_of_[i]];
-  double* sq = cq_.data() + r.lo;
-  double* sqd = cp_.data() + r.lo;
-  coords(r, t, sq, sqd);
-  rows(r, t, sq, sqd, 0, r.hi - r.lo, 1, u, v);
+  Run& r = runs_[run_of_[i]];
+  scratch_at(r, t);
+  rows(r, t, cq_.data() + r.lo, cp_.data() + r.lo, 0, r.hi - r.lo, 1, u, v);
 }
 
 ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, bool fresh, double t_limit) {
-  const Run& r = runs_[run_of_[i]];
+  Run& r = runs_[run_of_[i]];
   const int n = r.hi - r.lo, row = i - r.lo;
   const double dir = s.dir[i];
   // The velocity v = B + sum Q q_k' and each q_k' is a damped mode started from (q', q'') at
   // s.t. Event: -dir (v - B) >= dir B + eps_v, i.e. dir v <= -eps_v.
-  coords(r, s.t, cq_.data() + r.lo, cp_.data() + r.lo);
+  scratch_at(r, s.t);
   double v = B_[i];
   march_.reset();
   for (int k = 0; k < n; ++k) {
@@ -244,10 +246,10 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
       b += K_int_ * nb_B[side];
       continue;
     }
-    const Run& r = runs_[run_of_[nb]];
+    Run& r = runs_[run_of_[nb]];
     const int n = r.hi - r.lo, row = nb - r.lo;
     // The run's coordinates at s.t (its own origin may be older: it was kept across switches).
-    coords(r, s.t, cq_.data() + r.lo, cp_.data() + r.lo);
+    scratch_at(r, s.t);
     a += K_int_ * (A_[nb] + B_[nb] * s.t - s.u[j]);
     b += K_int_ * B_[nb];
     for (int k = 0; k < n; ++k) march_.add_mode(K_int_ * r.basis->run->Q(row, k), r.basis->run->modes[k], r.lo + k, r.basis->grid[k].data());

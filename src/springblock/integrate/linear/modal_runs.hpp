@@ -114,6 +114,7 @@ class ModalRuns {
     bool live = true;  // registered in the current classification
     bool grooves = false;  // no contact block in it
     double settled_after = std::numeric_limits<double>::infinity();
+    double scratch_t = std::numeric_limits<double>::quiet_NaN();  // time of cq_, cp_ (scratch_at)
   };
   // Rows of run r from modal coordinates q, qd at time t into u, v (rows [r0, r1) stepping by dr).
   void rows(const Run& r, double t, const double* q, const double* qd, int r0, int r1, int dr, double* u,
@@ -122,6 +123,9 @@ class ModalRuns {
   void set_end_amplitudes(const RunBasis& b, int lo, int hi);
   // Modal coordinates of run r at time t into q, qd (per mode, indices lo.. of the flat arrays).
   void coords(const Run& r, double t, double* q, double* qd) const;
+  // The same into the scratch slots cq_, cp_ [r.lo, r.hi), computed once per t: a switch
+  // searches a run's stops and both its stuck neighbours' crossings from the same s.t.
+  void scratch_at(Run& r, double t);
 
   int N_;
   double K_int_, eps_v_, H_, sample_dt_ = 0;
