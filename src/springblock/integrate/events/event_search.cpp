@@ -2,7 +2,19 @@
 
 #include <cmath>
 
+#include "springblock/integrate/events/first_root.hpp"
+
 namespace sb::event_detail {
+namespace {
+
+// Done when the bracket spans round-off in t: (hi - lo) h <= 4e-16 |t + hi h|, in units of the
+// step (theta).
+struct RoundOff {
+  double t, h;
+  double operator()(double hi) const { return 4e-16 * std::fabs(t + hi * h) / h; }
+};
+
+}  // namespace
 
 double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, double h, const ActiveSet& active,
                            double window) {
@@ -48,15 +60,15 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
     const int i = watched[k];
     theta_[k] = 2.0;
     if (s.dir[i] == 0 && active.beside_modal(i) && surely_no_event(i, 0.5) && surely_no_event(i, 1.0)) continue;
-    double lo = 0, hi = 2.0;
-    if (g(i, 0.5) <= 0) hi = 0.5;
-    else if (g(i, 1.0) <= 0) lo = 0.5, hi = 1.0;
-    if (hi > 1.0) continue;
-    // Bisection keeps g(lo) > 0 (or lo = 0, where the block has just switched), g(hi) <= 0.
-    for (int it = 0; it < 100 && (hi - lo) * h > 4e-16 * std::fabs(t + hi * h); ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (g(i, mid) > 0 ? lo : hi) = mid;
+    const double g_half = g(i, 0.5);
+    double lo, g_lo, hi, g_hi;
+    if (g_half <= 0) {
+      lo = 0, g_lo = g(i, 0.0), hi = 0.5, g_hi = g_half;
+    } else {
+      lo = 0.5, g_lo = g_half, hi = 1.0, g_hi = g(i, 1.0);
+      if (!(g_hi <= 0)) continue;
     }
+    hi = first_root([&](double th) { return g(i, th); }, lo, g_lo, hi, g_hi, RoundOff{t, h});
     theta_[k] = hi;
     if (hi < best) best = hi;
   }

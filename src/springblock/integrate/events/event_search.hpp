@@ -7,7 +7,7 @@
 // Only the watched blocks of the active set are searched: sliding blocks and stuck blocks next
 // to a stepped run (every other stuck block has an affine force and a closed-form crossing, see
 // active_set.hpp). Each g is sampled at the middle and the end of the step and the first sign
-// change is refined by bisection to round-off in t.
+// change is refined to round-off in t (first_root.hpp).
 #include <vector>
 
 #include "springblock/integrate/events/active_set.hpp"

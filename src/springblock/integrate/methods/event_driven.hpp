@@ -12,9 +12,10 @@
 //    brings only the exact runs it reads to its time (ActiveSet::materialise_near). After each
 //    accepted trial step the continuous extension is searched for switching events (a sliding
 //    block's v dir falls to 0; a stuck block's |F| rises to f_static), sampled at the middle and
-//    end of the step and refined by bisection. The step is then redone to exactly the earliest
-//    event time, every block whose event lies within 1e-12 of the step from it is switched at
-//    that instant (in block order), and integration restarts (the right-hand side has jumped).
+//    end of the step and refined to round-off in t (first_root.hpp). The step is then redone to
+//    exactly the earliest event time, every block whose event lies within 1e-12 of the step from
+//    it is switched at that instant (in block order), and integration restarts (the right-hand
+//    side has jumped).
 //  * Quiet phase (every contact block stuck): propagated exactly (quiet_phase.hpp); the next
 //    threshold crossing is found without stepping. Samples inside it are exact, except that an
 //    observer of contact forces only gets groove modes below the settle scales dropped
