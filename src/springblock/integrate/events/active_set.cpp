@@ -8,10 +8,9 @@
 namespace sb::event_detail {
 namespace {
 
-// rebuild() runs after every switch, and its scans over all N blocks were a tenth of a table
-// row's time, although a switch changes a handful of blocks. These read 8 blocks' bytes at once
-// to skip runs of blocks with nothing to do: the blocks visited, and their order, are those of
-// the byte-by-byte loop, so results are bit-identical.
+// The scans for runs and for switched blocks read 8 blocks' bytes at once to skip stretches with
+// nothing to do: the blocks visited, and their order, are those of the byte-by-byte loop, so
+// results are bit-identical.
 std::uint64_t load8(const void* p) {
   std::uint64_t x;
   std::memcpy(&x, p, sizeof x);
@@ -50,27 +49,25 @@ bool ActiveSet::settled_now(const State& s, BlockRange r) const {
   return settle_grooves_ && paths_.within(s, r, eps_u_, eps_v_);
 }
 
-void ActiveSet::rebuild(const Chain& c, const State& s, const std::uint8_t* touched) {
-  // A grooves-only run is always a whole groove segment; it keeps its A, B while it stays
-  // grooves-only, because its stuck boundary blocks have not moved since they were computed.
-  // kind_ still holds the previous classification until it is refilled below.
-  find_runs(c, s);
-  classify_runs(s, touched);
-  kind_prev_.swap(kind_);
+// From scratch: every run is new, every modal run projected, every event time computed.
+void ActiveSet::rebuild(const Chain& c, const State& s) {
+  runs_.clear();
+  find_runs(c, s, 0, N_, runs_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
-  for (const Run& r : runs_) std::fill(kind_.begin() + r.span.lo, kind_.begin() + r.span.hi, r.kind);
+  modal_.clear();
+  for (const BlockRange& r : fresh_runs_) std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 0);
+  fresh_runs_.clear();
+  for (Run& r : runs_) assign(c, s, r, classify(r, s, nullptr));
   list_stepped(s);
-  project_modal(c, s, touched);
-  update_events(c, s, touched);
+  update_events(c, s, nullptr, true);
 }
 
-void ActiveSet::find_runs(const Chain& c, const State& s) {
-  runs_.clear();
+void ActiveSet::find_runs(const Chain& c, const State& s, int lo, int hi, std::vector<Run>& out) const {
   const std::uint8_t* contact = c.contact.data();
   const std::int8_t* dir = s.dir.data();
-  for (int i = 0; i < N_;) {
+  for (int i = lo; i < hi;) {
     // Eight stuck contact blocks in a row: nothing starts here.
-    if (i + 8 <= N_ && load8(contact + i) == kOnes && load8(dir + i) == 0) {
+    if (i + 8 <= hi && load8(contact + i) == kOnes && load8(dir + i) == 0) {
       i += 8;
       continue;
     }
@@ -83,8 +80,8 @@ void ActiveSet::find_runs(const Chain& c, const State& s) {
     bool grooves = !contact[i];
     // Without internal springs every block is its own system.
     if (K_int_ > 0)
-      while (j + 1 < N_) {
-        if (j + 9 <= N_ && load8(contact + j + 1) == 0) {  // eight groove blocks: all mobile
+      while (j + 1 < hi) {
+        if (j + 9 <= hi && load8(contact + j + 1) == 0) {  // eight groove blocks: all mobile
           j += 8;
           continue;
         }
@@ -92,7 +89,7 @@ void ActiveSet::find_runs(const Chain& c, const State& s) {
         ++j;
         grooves = grooves && !contact[j];
       }
-    runs_.push_back(Run{{i, j + 1}, kStepped, grooves});
+    out.push_back(Run{{i, j + 1}, kStepped, grooves});
     i = j + 1;
   }
 }
@@ -114,70 +111,39 @@ bool ActiveSet::untouched(const State& s, const std::uint8_t* touched, BlockRang
   return true;
 }
 
-void ActiveSet::classify_runs(const State& s, const std::uint8_t* touched) {
-  for (Run& r : runs_) {
-    if (r.grooves) {
-      const std::uint8_t was = kind_[r.span.lo];
-      if (was == kSettled) {
-        r.kind = kSettled;
-        continue;
-      }
-      // A modal groove run that nothing in or beside it switched is kept, and was not brought
-      // to s.t (materialise_near): whether its transient is gone comes from its modes' envelope.
-      // Its A, B still hold: its stuck ends have not moved since they were computed.
-      if (was == kModal && untouched(s, touched, r.span) && modal_.same_run(r.span.lo, r.span.hi)) {
-        r.kind = s.t >= modal_.settled_after(r.span.lo) ? kSettled : kModal;
-        continue;
-      }
-      // Was stepped, or modal and touched (ringing, or part of an active run), or never
-      // classified: new A, B.
-      paths_.compute(s, r.span);
-      if (settled_now(s, r.span)) {
-        r.kind = kSettled;
-        continue;
-      }
-    }
-    if (r.span.hi - r.span.lo <= (r.grooves ? modal_max_groove_ : modal_max_)) r.kind = kModal;
+// A grooves-only run is always a whole groove segment; it keeps its A, B while it stays
+// grooves-only, because its stuck boundary blocks have not moved since they were computed.
+// kind_ still holds the previous classification.
+ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uint8_t* touched) {
+  if (r.grooves) {
+    const std::uint8_t was = kind_[r.span.lo];
+    if (was == kSettled) return kSettled;
+    // A modal groove run that nothing in or beside it switched is kept, and was not brought to
+    // s.t (materialise_near): whether its transient is gone comes from its modes' envelope.
+    if (was == kModal && untouched(s, touched, r.span) && modal_.same_run(r.span.lo, r.span.hi))
+      return s.t >= modal_.settled_after(r.span.lo) ? kSettled : kModal;
+    // Was stepped, or modal and touched (ringing, or part of an active run), or never
+    // classified: new A, B.
+    paths_.compute(s, r.span);
+    if (settled_now(s, r.span)) return kSettled;
   }
+  return r.span.hi - r.span.lo <= (r.grooves ? modal_max_groove_ : modal_max_) ? kModal : kStepped;
 }
 
-// Modal runs: a run none of whose blocks or stuck neighbours switched keeps its coordinates and
-// its blocks' stop times; the others are projected afresh at s.t.
-void ActiveSet::project_modal(const Chain& c, const State& s, const std::uint8_t* touched) {
-  std::fill(fresh_.begin(), fresh_.end(), 0);
-  if (!any_modal()) return;
-  modal_.begin(s);
-  for (const Run& r : runs_) {
-    if (r.kind != kModal) continue;
-    const bool keep = kind_prev_[r.span.lo] == kModal && untouched(s, touched, r.span);
-    if (modal_.add(c, s, r.span.lo, r.span.hi, keep, r.grooves))
-      for (int i = r.span.lo; i < r.span.hi; ++i) fresh_[i] = 1;
-  }
-  modal_.end();
+// A run that becomes modal is projected afresh at s.t. (One that stays modal with nothing in or
+// beside it switched keeps its coordinates and its blocks' event times: assign is not called
+// for it.)
+void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
+  r.kind = kind;
+  std::fill(kind_.begin() + r.span.lo, kind_.begin() + r.span.hi, kind);
+  if (kind != kModal) return;
+  modal_.add(c, s, r.span.lo, r.span.hi, r.grooves);
+  set_fresh(r.span);
 }
 
-// Only blocks that switched, changed kind or were projected afresh, and their neighbours, can
-// have a new event time (the rules in update_events do nothing for any other block), so only
-// they are visited, in index order as a full pass would.
-void ActiveSet::collect_candidates(const State& s, const std::uint8_t* touched) {
-  cand_.clear();
-  if (first_) {
-    for (int i = 0; i < N_; ++i) cand_.push_back(i);
-    return;
-  }
-  const std::int8_t* dir = s.dir.data();
-  int last = -1;
-  for (int i = 0; i < N_; ++i) {
-    if (i + 8 <= N_ && load8(dir + i) == load8(dir_prev_.data() + i) &&
-        load8(kind_.data() + i) == load8(kind_prev_.data() + i) && load8(fresh_.data() + i) == 0 &&
-        (touched == nullptr || load8(touched + i) == 0)) {
-      i += 7;  // none of the eight changed; the loop's ++i moves past them
-      continue;
-    }
-    if (s.dir[i] == dir_prev_[i] && kind_[i] == kind_prev_[i] && !fresh_[i] && (touched == nullptr || !touched[i]))
-      continue;
-    for (int j = std::max(i - 1, last + 1); j <= std::min(i + 1, N_ - 1); ++j) cand_.push_back(j), last = j;
-  }
+void ActiveSet::set_fresh(BlockRange r) {
+  std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 1);
+  fresh_runs_.push_back(r);
 }
 
 void ActiveSet::list_stepped(const State& s) {

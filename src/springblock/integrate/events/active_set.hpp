@@ -46,11 +46,14 @@ class ActiveSet {
             int modal_max_groove = 0, double t_end = std::numeric_limits<double>::infinity());
   void set_sample_dt(double dt) { modal_.set_sample_dt(dt); }
 
-  // Classify the runs after a switch at s.t (every settled and modal run already materialised
-  // in s).
-  // touched: per block, 1 if it switched since the last rebuild (Switching::touched()); without
-  // it a change of s.dir is taken as the switch.
-  void rebuild(const Chain& c, const State& s, const std::uint8_t* touched = nullptr);
+  // Classify every run at s.t from scratch (the start of a run).
+  void rebuild(const Chain& c, const State& s);
+  // After a switch at s.t (every settled and modal run the switch reads already materialised in
+  // s): the classification brought up to date where it can have changed, the same as a
+  // classification of every run that remembers the previous one would make
+  // (active_set_update.cpp). touched: per block, 1 if it switched since the last call, and
+  // touched_list the same blocks (Switching::touched(), touched_list()).
+  void update(const Chain& c, const State& s, const std::uint8_t* touched, const std::vector<int>& touched_list);
 
   // Runs stepped by Dormand-Prince, in block order.
   const std::vector<BlockRange>& stepped() const { return stepped_; }
@@ -100,18 +103,31 @@ class ActiveSet {
  private:
   struct Run {
     BlockRange span;
-    Kind kind;       // kStepped (active or ringing) or kSettled
+    Kind kind;       // kStepped (active or ringing), kSettled or kModal
     bool grooves;    // grooves only (never holds a contact block)
   };
   bool settled_now(const State& s, BlockRange r) const;
-  // The steps of rebuild(): the maximal runs of mobile blocks; their kinds; the modal runs'
-  // projections; the blocks whose event time may have changed; their new event times.
-  void find_runs(const Chain& c, const State& s);
-  void classify_runs(const State& s, const std::uint8_t* touched);
-  void project_modal(const Chain& c, const State& s, const std::uint8_t* touched);
+  // The maximal runs of mobile blocks in [lo, hi) (whose borders are stuck or the chain's ends),
+  // appended to out in block order.
+  void find_runs(const Chain& c, const State& s, int lo, int hi, std::vector<Run>& out) const;
+  // The kind of run r at s.t, given the previous classification in kind_ and modal_ (the
+  // grooves' A, B recomputed in paths_ where they may have changed).
+  Kind classify(const Run& r, const State& s, const std::uint8_t* touched);
+  // Set run r's kind in kind_ (its blocks); a run that becomes modal is registered, projected
+  // afresh (fresh_). The caller drops a modal run that stops being one.
+  void assign(const Chain& c, const State& s, Run& r, Kind kind);
+  void set_fresh(BlockRange r);
+  // update()'s steps: the stretches a switch of the listed blocks can have changed (regions_);
+  // the runs in one of them found and classified again; the grooves-only runs elsewhere whose
+  // kind changes with time; the blocks whose event time may have changed (cand_).
+  void find_regions(const Chain& c, const State& s, const std::vector<int>& touched_list);
+  void renew_region(const Chain& c, const State& s, const std::uint8_t* touched, BlockRange region);
+  void retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched);
   void collect_candidates(const State& s, const std::uint8_t* touched);
-  void update_events(const Chain& c, const State& s, const std::uint8_t* touched);
-  // Block i (or nothing, outside the chain) switched since the last rebuild.
+  // The new event times of the blocks in cand_ (every contact block's when all is set), then
+  // the previous classification is forgotten (dir_prev_, kind_prev_ where it changed).
+  void update_events(const Chain& c, const State& s, const std::uint8_t* touched, bool all);
+  // Block i (or nothing, outside the chain) switched since the last classification.
   bool switched(const State& s, const std::uint8_t* touched, int i) const;
   // Nothing in r or beside it switched.
   bool untouched(const State& s, const std::uint8_t* touched, BlockRange r) const;
@@ -136,7 +152,10 @@ class ActiveSet {
   int modal_max_groove_;  // longest modal grooves-only run
   double t_end_;
   ModalRuns modal_;
-  std::vector<std::int8_t> dir_prev_;   // s.dir at the previous rebuild
+  // s.dir and kind_ at the previous classification. Between classifications they equal s.dir and
+  // kind_ (retire_settled keeps kind_prev_ along), so only the blocks a classification changes
+  // differ while it runs.
+  std::vector<std::int8_t> dir_prev_;
   std::vector<std::uint8_t> kind_prev_;
   double eps_u_, eps_v_;
   std::vector<std::uint8_t> kind_;
@@ -145,12 +164,16 @@ class ActiveSet {
   std::vector<int> watched_;
   AffinePaths paths_;                  // settled and just-classified groove runs' A + B t
   EventQueue events_;                  // per contact block: next closed-form or modal event (inf if none / watched)
-  std::vector<std::uint8_t> fresh_;    // per block: in a modal run projected afresh at this rebuild
+  std::vector<std::uint8_t> fresh_;    // per block: in a modal run projected afresh at this classification
+  std::vector<BlockRange> fresh_runs_;  // those runs (to clear fresh_ at the next one)
   std::vector<int> pending_;           // blocks whose modal search is due
   std::vector<int> done_;              // materialise_near: modal runs written (first blocks)
-  std::vector<int> cand_;              // rebuild: blocks whose event time may have changed
+  std::vector<int> cand_;              // blocks whose event time may have changed
+  std::vector<int> switched_;          // update: the switched blocks in block order
+  std::vector<BlockRange> regions_;    // update: the stretches renewed, in block order
+  std::vector<BlockRange> retimed_;    // update: runs outside them whose kind changed with time
+  std::vector<Run> found_;             // update: the runs found in one region
   std::vector<int> ringing_;           // runs_ indices of stepped grooves-only runs (list_stepped)
-  bool first_ = true;        // the first rebuild computes every event time
 };
 
 }  // namespace sb::event_detail

@@ -11,9 +11,14 @@ namespace sb::event_detail {
 
 // Closed-form crossings and the kept modal events first, then the fresh modal searches
 // (finish_events).
-void ActiveSet::update_events(const Chain& c, const State& s, const std::uint8_t* touched) {
+void ActiveSet::update_events(const Chain& c, const State& s, const std::uint8_t* touched, bool all) {
   pending_.clear();
-  collect_candidates(s, touched);
+  if (all) {
+    cand_.resize(N_);
+    for (int i = 0; i < N_; ++i) cand_[i] = i;
+  } else {
+    collect_candidates(s, touched);
+  }
   for (int i : cand_) {
     if (!c.contact[i] || (s.dir[i] != 0 && kind_[i] != kModal)) {
       events_.set(i, kInf, false);
@@ -23,15 +28,16 @@ void ActiveSet::update_events(const Chain& c, const State& s, const std::uint8_t
       // A stuck block keeps its event time unless something next to it changed: it does not
       // move, nor do its stuck neighbours, and a settled or kept modal neighbour follows the
       // same path as when the time was found.
-      bool changed = first_ || switched(s, touched, i) || switched(s, touched, i - 1) ||
+      bool changed = all || switched(s, touched, i) || switched(s, touched, i - 1) ||
                      switched(s, touched, i + 1) || kind_prev_[i] != kStuck;
       for (int j : {i - 1, i + 1})
         if (j >= 0 && j < N_) changed = changed || kind_[j] != kind_prev_[j] || fresh_[j];
       if (changed && !refresh_stuck(c, s, i)) pending_.push_back(i);
     }
   }
-  std::copy(s.dir.begin(), s.dir.end(), dir_prev_.begin());
-  first_ = false;
+  // The previous classification is forgotten: every block whose dir or kind changed is a
+  // candidate.
+  for (int i : cand_) dir_prev_[i] = s.dir[i], kind_prev_[i] = kind_[i];
   finish_events(c, s);
 }
 
@@ -126,7 +132,7 @@ bool ActiveSet::retire_settled(const Chain& c, const State& s) {
     Run& r = runs_[k];
     if (!settled_now(s, r.span)) continue;
     r.kind = kSettled;
-    for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = kSettled;
+    for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = kind_prev_[i] = kSettled;
     changed = true;
   }
   if (!changed) return false;

@@ -46,6 +46,7 @@ class Switching {
   // Blocks switched since the last clear_touched(), 1 per block (a stop followed by a restart
   // at the same instant leaves dir unchanged, so dir alone does not show it).
   const std::uint8_t* touched() const { return touched_.data(); }
+  const std::vector<int>& touched_list() const { return touched_list_; }  // the same blocks, in switching order
   void clear_touched() {
     for (int i : touched_list_) touched_[i] = 0;
     touched_list_.clear();

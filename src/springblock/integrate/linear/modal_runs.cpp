@@ -59,16 +59,7 @@ const ModalRuns::Basis& ModalRuns::basis(int n, bool left, bool right) {
   return bases_.emplace(key, std::move(b)).first->second;
 }
 
-void ModalRuns::begin(const State&) {
-  for (Run& r : runs_) r.live = false;
-}
-
-bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, bool grooves) {
-  const int old = run_of_[lo];
-  if (keep && old >= 0 && runs_[old].lo == lo && runs_[old].hi == hi && !runs_[old].live) {
-    runs_[old].live = true;
-    return false;
-  }
+void ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool grooves) {
   ++projections;
   const int n = hi - lo;
   const bool left = lo > 0, right = hi < N_;
@@ -105,31 +96,34 @@ bool ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool keep, b
     acc0_[lo + k] = -c.gamma * pk - b.run->modes[k].omega2 * qk;
   }
   set_end_amplitudes(*b.run, lo, hi);
-  Run run{lo, hi, &b, s.t, s.t, 0, false, true, grooves};
+  Run run{lo, hi, &b, s.t, s.t, 0, false, grooves};
   if (grooves) run.settled_after = s.t + transient_envelope(*b.run, q0_.data() + lo, p0_.data() + lo).time_below(eps_u_, eps_v_settle_);
-  if (old >= 0 && runs_[old].lo == lo && !runs_[old].live) {
-    // Reuse the slot of the old run that started here; its blocks are re-marked by end().
-    for (int i = runs_[old].lo; i < runs_[old].hi; ++i) run_of_[i] = -1;
-    runs_[old] = run;
-  } else {
-    runs_.push_back(run);
+  for (int i = lo; i < hi; ++i) run_of_[i] = static_cast<int>(runs_.size());
+  runs_.push_back(run);
+}
+
+// The runs' order in runs_ means nothing (each writes and searches its own blocks), so the last
+// one fills the gap.
+void ModalRuns::drop(int lo) {
+  const int k = run_of_[lo];
+  for (int i = runs_[k].lo; i < runs_[k].hi; ++i) run_of_[i] = -1;
+  if (k + 1 < static_cast<int>(runs_.size())) {
+    runs_[k] = runs_.back();
+    for (int i = runs_[k].lo; i < runs_[k].hi; ++i) run_of_[i] = k;
   }
-  return true;
+  runs_.pop_back();
+}
+
+void ModalRuns::clear() {
+  for (const Run& r : runs_)
+    for (int i = r.lo; i < r.hi; ++i) run_of_[i] = -1;
+  runs_.clear();
 }
 
 // The end rows' bounds from the projection (envelope.hpp); interior rows are not bounded (+inf).
 void ModalRuns::set_end_amplitudes(const RunBasis& b, int lo, int hi) {
   for (int i = lo; i < hi; ++i) amp_[i] = std::numeric_limits<double>::infinity();
   for (int row : {0, hi - lo - 1}) amp_[lo + row] = row_deviation_bound(b, row, q0_.data() + lo, p0_.data() + lo);
-}
-
-void ModalRuns::end() {
-  for (const Run& r : runs_)
-    if (!r.live)
-      for (int i = r.lo; i < r.hi; ++i) run_of_[i] = -1;
-  runs_.erase(std::remove_if(runs_.begin(), runs_.end(), [](const Run& r) { return !r.live; }), runs_.end());
-  for (int k = 0; k < static_cast<int>(runs_.size()); ++k)
-    for (int i = runs_[k].lo; i < runs_[k].hi; ++i) run_of_[i] = k;
 }
 
 void ModalRuns::coords(const Run& r, double t, double* q, double* qd) const {

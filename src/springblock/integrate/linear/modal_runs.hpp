@@ -42,14 +42,14 @@ class ModalRuns {
   // Samples spaced by dt are advanced by each mode's exact transition matrix over dt.
   void set_sample_dt(double dt);
 
-  // Start a classification at s.t. keep(lo, hi) says whether the run [lo, hi) may keep its
-  // coordinates (it was modal with the same span and nothing in or beside it switched).
-  void begin(const State& s);
-  // Register run [lo, hi) as modal at s.t (grooves: it holds no contact block). Returns true if
-  // it was projected afresh (its events need searching), false if kept from before.
-  bool add(const Chain& c, const State& s, int lo, int hi, bool keep, bool grooves);
-  // Drop the runs not registered since begin().
-  void end();
+  // Register run [lo, hi) as modal, projected afresh at s.t (grooves: it holds no contact
+  // block). A run that stays modal with nothing in or beside it switched is simply kept (the
+  // active set decides): it keeps its coordinates and origin.
+  void add(const Chain& c, const State& s, int lo, int hi, bool grooves);
+  // The run starting at block lo is no longer modal.
+  void drop(int lo);
+  // No run is modal.
+  void clear();
   // Transients below these (in u and v, every row) count as gone: see settled_after().
   void set_settle_scales(double eps_u, double eps_v) { eps_u_ = eps_u, eps_v_settle_ = eps_v; }
   // For the run holding block i: a time after which its deviation from the affine path is
@@ -111,7 +111,6 @@ class ModalRuns {
     double tc;        // time of the sample cursor qc, qdc
     int since = 0;    // recurrence steps since the cursor was last set from the closed form
     bool cursor = false;
-    bool live = true;  // registered in the current classification
     bool grooves = false;  // no contact block in it
     double settled_after = std::numeric_limits<double>::infinity();
     double scratch_t = std::numeric_limits<double>::quiet_NaN();  // time of cq_, cp_ (scratch_at)

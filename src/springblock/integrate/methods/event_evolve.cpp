@@ -10,7 +10,7 @@ template <bool Coupled, bool Damped>
 void EventRun::run() {
   sw_.sync(c_, s_);
   sw_.apply(c_, s_, true);
-  reclassify();
+  reclassify(true);
   obs_.sample(c_, s_);
   while (s_.t < t_end_ && !obs_.wants_stop()) {
     if (opt_.fast_forward && sw_.n_sliding() == 0) {

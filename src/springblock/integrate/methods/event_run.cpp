@@ -34,8 +34,11 @@ EventRun::EventRun(const Chain& c, State& s, double t_end, double sample_dt, Obs
   }
 }
 
-void EventRun::reclassify() {
-  active_.rebuild(c_, s_, sw_.touched());
+void EventRun::reclassify(bool from_scratch) {
+  if (from_scratch)
+    active_.rebuild(c_, s_);
+  else
+    active_.update(c_, s_, sw_.touched(), sw_.touched_list());
   sw_.clear_touched();
   dp_.set_frozen(s_.u.data(), active_.stepped());
 }

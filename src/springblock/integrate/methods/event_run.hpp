@@ -62,8 +62,9 @@ class EventRun {
   template <bool Coupled, bool Damped>
   void step_to_event(const std::vector<BlockRange>& spans, double h_event, bool at_stop, double t_stop);
 
-  // After every switch: which runs are stepped, which stuck blocks are watched.
-  void reclassify();
+  // After every switch: which runs are stepped, which stuck blocks are watched (from scratch at
+  // the start of the run).
+  void reclassify(bool from_scratch = false);
   // Apply the switching rules to the blocks flagged at s.t (see event_run.cpp).
   void switch_now();
   // The stepped blocks take the end of the last attempted step.

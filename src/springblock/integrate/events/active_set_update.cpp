@@ -1,0 +1,110 @@
+// The active set after a switch, brought up to date only where the switch can have changed it.
+//
+// A switch changes whether a handful of blocks are mobile, so the runs (maximal stretches of
+// mobile blocks) change only in the stretches around them; everywhere else the runs keep their
+// spans, and their kinds too, except for grooves-only runs whose kind changes with time alone (a
+// modal groove run whose transient has died becomes settled; a ringing one is checked against
+// its affine path). Classifying every run at every switch, as rebuild() does at the start, cost
+// O(N) per switch in scans, fills and copies; this costs what the switch changed. It makes the
+// same classification to the last bit, because it applies the same rules (classify()) to every
+// run whose kind can change and leaves the others as they are:
+//   * a run within a renewed region (below) borders a switched block, so a rule could not have
+//     kept it anyway;
+//   * a run outside the regions has no switched block in it or beside it.
+#include <algorithm>
+
+#include "springblock/integrate/events/active_set.hpp"
+
+namespace sb::event_detail {
+
+void ActiveSet::update(const Chain& c, const State& s, const std::uint8_t* touched,
+                       const std::vector<int>& touched_list) {
+  for (const BlockRange& r : fresh_runs_) std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 0);
+  fresh_runs_.clear();
+  find_regions(c, s, touched_list);
+  for (const BlockRange& region : regions_) renew_region(c, s, touched, region);
+  retime_grooves(c, s, touched);
+  list_stepped(s);
+  update_events(c, s, touched, false);
+}
+
+// A switched block b can change the runs that hold b - 1, b or b + 1 (the blocks beside a run
+// are its borders). Its region is b with the stretches of blocks mobile before or after the
+// switch on both sides: the blocks just outside are stuck before and after, so every run, old or
+// new, lies inside a region or outside all of them. Overlapping regions are merged.
+void ActiveSet::find_regions(const Chain& c, const State& s, const std::vector<int>& touched_list) {
+  regions_.clear();
+  switched_.assign(touched_list.begin(), touched_list.end());
+  std::sort(switched_.begin(), switched_.end());
+  auto mobile_either = [&](int i) { return !c.contact[i] || s.dir[i] != 0 || dir_prev_[i] != 0; };
+  for (int b : switched_) {
+    if (!regions_.empty() && b < regions_.back().hi) continue;
+    int lo = b, hi = b + 1;
+    if (K_int_ > 0) {
+      while (lo > 0 && mobile_either(lo - 1)) --lo;
+      while (hi < N_ && mobile_either(hi)) ++hi;
+    }
+    if (!regions_.empty() && lo <= regions_.back().hi)
+      regions_.back().hi = std::max(regions_.back().hi, hi);
+    else
+      regions_.push_back({lo, hi});
+  }
+}
+
+// The region's runs found afresh and classified by the same rules as rebuild() with the previous
+// classification in hand; the old runs in it leave (a modal one is dropped: none can be kept).
+void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t* touched, BlockRange region) {
+  auto by_start = [](const Run& r, int i) { return r.span.lo < i; };
+  const auto first = std::lower_bound(runs_.begin(), runs_.end(), region.lo, by_start);
+  const auto last = std::lower_bound(first, runs_.end(), region.hi, by_start);
+  found_.clear();
+  find_runs(c, s, region.lo, region.hi, found_);
+  // classify() reads the previous kinds, so every new kind is decided before any is written.
+  for (Run& r : found_) r.kind = classify(r, s, touched);
+  for (auto it = first; it != last; ++it)
+    if (it->kind == kModal) modal_.drop(it->span.lo);
+  std::fill(kind_.begin() + region.lo, kind_.begin() + region.hi, kStuck);
+  for (Run& r : found_) assign(c, s, r, r.kind);
+  const auto at = runs_.erase(first, last);
+  runs_.insert(at, found_.begin(), found_.end());
+}
+
+// Outside the regions only a grooves-only run that is modal or ringing can change kind, with time.
+void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched) {
+  retimed_.clear();
+  std::size_t g = 0;  // the first region not before the run
+  for (Run& r : runs_) {
+    while (g < regions_.size() && regions_[g].hi <= r.span.lo) ++g;
+    if (g < regions_.size() && regions_[g].lo <= r.span.lo) continue;  // renewed
+    if (!r.grooves || (r.kind != kModal && r.kind != kStepped)) continue;
+    const Kind kind = classify(r, s, touched);
+    if (kind == r.kind) continue;
+    if (r.kind == kModal) modal_.drop(r.span.lo);
+    assign(c, s, r, kind);
+    retimed_.push_back(r.span);
+  }
+}
+
+// Only blocks that switched, changed kind or were projected afresh, and their neighbours, can
+// have a new event time (the rules in update_events do nothing for any other block), so only
+// they are visited, in index order as rebuild's pass over every block would. They all lie in the
+// regions and the retimed runs (two lists in block order, disjoint).
+void ActiveSet::collect_candidates(const State& s, const std::uint8_t* touched) {
+  cand_.clear();
+  int last = -1;
+  auto visit = [&](BlockRange r) {
+    for (int i = r.lo; i < r.hi; ++i) {
+      if (s.dir[i] == dir_prev_[i] && kind_[i] == kind_prev_[i] && !fresh_[i] && !touched[i]) continue;
+      for (int j = std::max(i - 1, last + 1); j <= std::min(i + 1, N_ - 1); ++j) cand_.push_back(j), last = j;
+    }
+  };
+  std::size_t a = 0, b = 0;
+  while (a < regions_.size() || b < retimed_.size()) {
+    if (b == retimed_.size() || (a < regions_.size() && regions_[a].lo < retimed_[b].lo))
+      visit(regions_[a++]);
+    else
+      visit(retimed_[b++]);
+  }
+}
+
+}  // namespace sb::event_detail
