@@ -2,15 +2,19 @@
 """tools/readme_cost.py's run lines on synthetic run records (no simulation, a second): one run is
 printed as it is; several runs of one commit are judged on the median one, every total listed;
 runs of different commits, tiers or build states are refused; the goals' verdicts follow the
-numbers they are given."""
+numbers they are given. And bench/summarize.py's ratios against the paper's method, which the
+README's table prints: the event method's median repetition against the other side's fastest."""
+import json
 import os
 import sys
+import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(REPO, "tools"))
 import readme_cost as rc  # noqa: E402
+import summarize  # noqa: E402  (bench/, put on the path by readme_cost)
 
 
 def record(total, targets, commit="abc1234", tier="paper", units=25):
@@ -46,6 +50,42 @@ class RunLines(unittest.TestCase):
                       record(420.0, 280.0, units=0)):
             with self.assertRaises(SystemExit):
                 rc.run_lines([record(431.0, 294.0), other])
+
+
+def bench_json(times):
+    """Google Benchmark JSON with one iteration row per (name, CPU seconds)."""
+    rows = [{"name": f"{n}/iterations:1/repeats:3", "run_name": f"{n}/iterations:1/repeats:3",
+             "run_type": "iteration", "cpu_time": t, "real_time": t, "time_unit": "s", "switches": 10.0}
+            for n, ts in times.items() for t in ts]
+    return {"context": {}, "benchmarks": rows}
+
+
+class VsPaperRatios(unittest.TestCase):
+    def ratios(self, times):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "vs_paper.json")
+            with open(path, "w") as f:
+                json.dump(bench_json(times), f)
+            return {(r["scene"], r["against"]): r for r in summarize.vs_paper_ratios(path)}
+
+    def test_the_other_side_counts_at_its_fastest(self):
+        r = self.ratios({"vs_paper/periodic:10,10/paper_rk4": [56.0, 38.0, 49.5],
+                         "vs_paper/periodic:10,10/rk4": [12.0, 11.5, 13.0],
+                         "vs_paper/periodic:10,10/event": [0.05, 0.04, 0.06]})
+        paper, rk4 = r[("periodic:10,10", "paper_rk4")], r[("periodic:10,10", "rk4")]
+        self.assertAlmostEqual(paper["other_s"], 38.0)  # the fastest, not the median 49.5
+        self.assertAlmostEqual(paper["event_s"], 0.05)  # the median
+        self.assertAlmostEqual(paper["ratio"], 760.0)
+        self.assertFalse(paper["met"])  # goal x1000
+        self.assertAlmostEqual(rk4["ratio"], 230.0)
+        self.assertFalse(rk4["met"])  # goal x300
+
+    def test_the_verdict_follows_the_ratio(self):
+        r = self.ratios({"vs_paper/smooth/paper_rk4": [40.0, 36.0, 37.0], "vs_paper/smooth/event": [0.035, 0.030, 0.040]})
+        self.assertAlmostEqual(r[("smooth", "paper_rk4")]["ratio"], 36.0 / 0.035)
+        self.assertTrue(r[("smooth", "paper_rk4")]["met"])
+        r = self.ratios({"vs_paper/smooth/paper_rk4": [40.0, 36.0, 37.0], "vs_paper/smooth/event": [0.037, 0.030, 0.040]})
+        self.assertFalse(r[("smooth", "paper_rk4")]["met"])  # x973
 
 
 if __name__ == "__main__":
