@@ -55,8 +55,7 @@ void ActiveSet::rebuild(const Chain& c, const State& s) {
   find_runs(c, s, 0, N_, runs_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
   modal_.clear();
-  for (const BlockRange& r : fresh_runs_) std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 0);
-  fresh_runs_.clear();
+  clear_fresh();
   for (Run& r : runs_) assign(c, s, r, classify(r, s, nullptr));
   list_stepped(s);
   update_events(c, s, nullptr, true);
@@ -144,6 +143,11 @@ void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
 void ActiveSet::set_fresh(BlockRange r) {
   std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 1);
   fresh_runs_.push_back(r);
+}
+
+void ActiveSet::clear_fresh() {
+  for (const BlockRange& r : fresh_runs_) std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 0);
+  fresh_runs_.clear();
 }
 
 void ActiveSet::list_stepped(const State& s) {

@@ -116,7 +116,9 @@ class ActiveSet {
   // Set run r's kind in kind_ (its blocks); a run that becomes modal is registered, projected
   // afresh (fresh_). The caller drops a modal run that stops being one.
   void assign(const Chain& c, const State& s, Run& r, Kind kind);
+  // Mark run r projected afresh at this classification; forget the marks of the previous one.
   void set_fresh(BlockRange r);
+  void clear_fresh();
   // update()'s steps: the stretches a switch of the listed blocks can have changed (regions_);
   // the runs in one of them found and classified again; the grooves-only runs elsewhere whose
   // kind changes with time; the blocks whose event time may have changed (cand_).

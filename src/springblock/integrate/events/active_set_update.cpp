@@ -19,8 +19,7 @@ namespace sb::event_detail {
 
 void ActiveSet::update(const Chain& c, const State& s, const std::uint8_t* touched,
                        const std::vector<int>& touched_list) {
-  for (const BlockRange& r : fresh_runs_) std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 0);
-  fresh_runs_.clear();
+  clear_fresh();
   find_regions(c, s, touched_list);
   for (const BlockRange& region : regions_) renew_region(c, s, touched, region);
   retime_grooves(c, s, touched);

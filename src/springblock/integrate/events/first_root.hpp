@@ -1,6 +1,6 @@
 #pragma once
 // The event search's refinement of a bracket: the crossed end of [lo, hi] of an event function g
-// with g(lo) > 0 >= g(hi), narrowed until the bracket is no wider than `done` allows.
+// with g(lo) > 0 >= g(hi), narrowed until the bracket is no wider than width(hi).
 //
 // Regula falsi with the Illinois rule (the value of a bracket end that stays put twice in a row
 // is halved, so neither end can stall), each point kept half the final width inside the bracket
@@ -13,9 +13,8 @@
 //
 // g(lo) <= 0 is allowed where lo is the start of the step: a block that has just switched may sit
 // on its threshold there (g = 0); the first point is then a bisection's, as is every point after
-// a NaN. EdgeMarch refines its
-// brackets with a slope from every evaluation (Newton's method first); the continuous extension
-// has no slope at hand, so this is the derivative-free form.
+// a NaN. EdgeMarch refines its brackets with a slope from every evaluation (Newton's method
+// first); the continuous extension has no slope at hand, so this is the derivative-free form.
 #include <algorithm>
 
 namespace sb::event_detail {

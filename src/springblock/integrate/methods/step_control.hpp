@@ -44,8 +44,8 @@ class StepControl {
  private:
   // Order-5 controller with safety 0.9, limited to [0.2, 5]. The limits bind for err below
   // (0.9 / 5)^5 = 1.89e-4 and above (0.9 / 0.2)^5 = 1845; outside a margin around those the pow
-  // (a few per cent of a run: most trial steps are cut short by an event or a sample and have a
-  // tiny error) is not taken, and the factor is the same double either way.
+  // (2 to 3 per cent of a smooth chain's run, perf) is not taken, and the factor is the same
+  // double either way.
   static double factor(double err) {
     if (err < 1.8e-4) return 5.0;
     if (err > 2000.0) return 0.2;
