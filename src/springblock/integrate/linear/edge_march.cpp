@@ -1,5 +1,6 @@
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/infinity.hpp"
+#include "springblock/kernel_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,15 +36,17 @@ double fastest_rate(const DampedMode& m, double omega) {
 }  // namespace
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
-  const double omega = std::sqrt(mode.omega2);
-  modes_.push_back({w, omega, omega + 2.0 * mode.alpha, fastest_rate(mode, omega), mode, 0, 0, 0, 0, index});
+  const double P[4] = {0, 0, 0, 0};  // set by finish()
+  add_mode(w, mode, index, P);
 }
 
 double EdgeMarch::grid_step(double omega_max) { return kGrid / omega_max; }
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const double* P) {
   const double omega = std::sqrt(mode.omega2);
-  modes_.push_back({w, omega, omega + 2.0 * mode.alpha, fastest_rate(mode, omega), mode, P[0], P[1], P[2], P[3], index});
+  modes_.push_back({w, omega, omega + 2.0 * mode.alpha, fastest_rate(mode, omega), mode, index});
+  w_.push_back(w);
+  p00_.push_back(P[0]), p01_.push_back(P[1]), p10_.push_back(P[2]), p11_.push_back(P[3]);
 }
 
 void EdgeMarch::finish(double H) {
@@ -65,9 +68,9 @@ void EdgeMarch::finish() {
   double omega_max = 0;
   for (const Mode& m : modes_) omega_max = std::max(omega_max, m.omega);
   H_ = kGrid / omega_max;
-  for (Mode& m : modes_) {
-    m.mode.eval(1.0, 0.0, H_, m.p00, m.p10);
-    m.mode.eval(0.0, 1.0, H_, m.p01, m.p11);
+  for (std::size_t k = 0; k < modes_.size(); ++k) {
+    modes_[k].mode.eval(1.0, 0.0, H_, p00_[k], p10_[k]);
+    modes_[k].mode.eval(0.0, 1.0, H_, p01_[k], p11_[k]);
   }
   for (auto* v : {&q_, &qd_, &qn_, &qdn_, &qs_, &qds_}) v->assign(modes_.size(), 0.0);
   taylor_ok_ = true;
@@ -83,19 +86,30 @@ void EdgeMarch::direct(const double* q0, const double* p0, double tau, double* q
       });
 }
 
+namespace {
+// Every mode advanced by its transition over H: element-wise, so it vectorises (restrict).
+SB_KERNEL_CLONES void transition(int n, const double* __restrict p00, const double* __restrict p01,
+                                 const double* __restrict p10, const double* __restrict p11,
+                                 const double* __restrict q, const double* __restrict qd, double* __restrict qn,
+                                 double* __restrict qdn) {
+  for (int k = 0; k < n; ++k) {
+    qn[k] = p00[k] * q[k] + p01[k] * qd[k];
+    qdn[k] = p10[k] * q[k] + p11[k] * qd[k];
+  }
+}
+}  // namespace
+
 void EdgeMarch::grid_step() {
   ++grid_steps;
-  for (std::size_t k = 0; k < modes_.size(); ++k) {
-    const Mode& m = modes_[k];
-    const double q = q_[k], qd = qd_[k];
-    qn_[k] = m.p00 * q + m.p01 * qd;
-    qdn_[k] = m.p10 * q + m.p11 * qd;
-  }
+  transition(static_cast<int>(modes_.size()), p00_.data(), p01_.data(), p10_.data(), p11_.data(), q_.data(),
+             qd_.data(), qn_.data(), qdn_.data());
 }
 
 double EdgeMarch::force_at(double tau, const double* q) const {
+  // Summed in mode order (not vectorised): F decides brackets, and its last bits are kept.
   double F = a_ + b_ * tau;
-  for (std::size_t k = 0; k < modes_.size(); ++k) F += modes_[k].w * q[k];
+  const double* w = w_.data();
+  for (std::size_t k = 0; k < modes_.size(); ++k) F += w[k] * q[k];
   return F;
 }
 

@@ -58,7 +58,10 @@ class EdgeMarch {
   void add_mode(double w, const DampedMode& mode, int index, const double* P);
   void finish(double H);
   // Forget the modes (the storage is kept for reuse).
-  void reset() { modes_.clear(); }
+  void reset() {
+    modes_.clear();
+    for (auto* v : {&w_, &p00_, &p01_, &p10_, &p11_}) v->clear();
+  }
   // The grid step used by finish() for modes no faster than omega_max.
   static double grid_step(double omega_max);
 
@@ -87,7 +90,6 @@ class EdgeMarch {
     double w, omega, m2;  // weight, sqrt(omega^2), (omega + gamma) for the |q''| bound
     double rate;          // largest |eigenvalue| of the mode: omega, or alpha + kappa if overdamped
     DampedMode mode;
-    double p00, p01, p10, p11;  // [q, qd](tau + H) = P [q, qd](tau)
     int index;
   };
   struct Bounds {
@@ -127,6 +129,10 @@ class EdgeMarch {
   void local_eval(double tau, double& F, double& dF);
 
   std::vector<Mode> modes_;
+  // The grid step's hot data apart, one array each (structure of arrays): the weights and each
+  // mode's transition over H, [q, qd](tau + H) = [[p00, p01], [p10, p11]] [q, qd](tau), so the
+  // transition vectorises and a grid step reads only what it uses.
+  std::vector<double> w_, p00_, p01_, p10_, p11_;
   std::vector<double> q_, qd_;    // the modes at the march's current point
   std::vector<double> qn_, qdn_;  // at the next grid point
   std::vector<double> qs_, qds_;  // scratch of the grazing search's direct evaluations
