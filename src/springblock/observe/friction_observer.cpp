@@ -6,35 +6,60 @@
 #include <functional>
 #include <limits>
 
+#include "springblock/chain_force.hpp"
+#include "springblock/kernel_clones.hpp"
+
 namespace sb {
+
+namespace {
+// The force on each of blocks lo..hi-1 (all interior: 0 < i < N - 1) if it is stuck (v = 0: no
+// damping term), as sample() reads it. Element-wise, so it vectorises; the entries of sliding
+// blocks are computed too, and not read.
+SB_KERNEL_CLONES void stuck_forces(const ForceCoefficients& k, int lo, int hi, double slider,
+                                   const double* __restrict u, double* __restrict f) {
+  for (int i = lo; i < hi; ++i) f[i] = force_interior<true, false>(k, i, slider, u, nullptr, 0.0);
+}
+}  // namespace
 
 void FrictionObserver::sample(const Chain& c, const State& s) {
   if (s.presummed.valid) {
     record(c, s, s.presummed.abs / cfg_.F_load, s.presummed.signed_sum / cfg_.F_load, s.presummed.n_sliding);
     return;
   }
-  // The contact blocks, listed once: grooves carry no friction and are skipped without a test.
-  if (contacts_.empty() && c.n_contact > 0)
-    for (int i = 0; i < c.N; ++i)
-      if (c.contact[i]) contacts_.push_back(i);
+  // The contact blocks, listed once (and as runs of consecutive blocks): grooves carry no
+  // friction and are skipped without a test.
+  if (contacts_.empty() && c.n_contact > 0) {
+    for (int i = 0; i < c.N; ++i) {
+      if (!c.contact[i]) continue;
+      if (contacts_.empty() || contacts_.back() != i - 1) contact_runs_.push_back({i, i + 1});
+      else contact_runs_.back().second = i + 1;
+      contacts_.push_back(i);
+    }
+    f_contact_.assign(c.N, 0.0);
+  }
+  const double* u = s.u.data();
+  const std::int8_t* dir = s.dir.data();
+  const ForceCoefficients k = c.force_coefficients();
+  // Every contact block's force if stuck, a run at a time (the chain's ends by the checked
+  // form), then the forces summed in block order: the doubles and the order of one loop over
+  // the blocks, as before the forces were taken apart (bit-identical, test_golden).
+  double* f = f_contact_.data();
   double sum_abs = 0, sum_signed = 0;
   int n_sliding = 0;
-  const double* u = s.u.data();
-  const double slider = c.v_slider * s.t;
-  const ForceCoefficients k = c.force_coefficients();
-  for (int i : contacts_) {
-    double f;
-    if (s.dir[i] != 0) {
-      f = s.dir[i] * c.f_kinetic[i];
-      ++n_sliding;
-    } else if (i > 0 && i + 1 < c.N) {
-      // A stuck block has v = 0: no damping term.
-      f = force_interior<true, false>(k, i, slider, u, s.v.data(), 0.0);
-    } else {
-      f = c.driving_force(i, u, s.v.data(), s.t);
+  for (const auto& [lo, hi] : contact_runs_) {
+    const int first = std::max(lo, 1), last = std::min(hi, c.N - 1);
+    if (first < last) stuck_forces(k, first, last, c.v_slider * s.t, u, f);
+    for (int i : {lo, hi - 1})
+      if (i == 0 || i == c.N - 1) f[i] = c.driving_force(i, u, s.v.data(), s.t);
+    for (int i = lo; i < hi; ++i) {
+      double fi = f[i];
+      if (dir[i] != 0) {
+        fi = dir[i] * c.f_kinetic[i];
+        ++n_sliding;
+      }
+      sum_abs += std::fabs(fi);
+      sum_signed += fi;
     }
-    sum_abs += std::fabs(f);
-    sum_signed += f;
   }
   record(c, s, sum_abs / cfg_.F_load, sum_signed / cfg_.F_load, n_sliding);
 }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "springblock/observe/observer.hpp"
@@ -100,6 +101,8 @@ class FrictionObserver final : public Observer {
   std::vector<Sample> series_;
   std::vector<StressSnapshot> stress_;
   std::vector<int> contacts_;  // indices of the contact blocks, built on the first sample
+  std::vector<std::pair<int, int>> contact_runs_;  // the same as runs [lo, hi) of consecutive blocks
+  std::vector<double> f_contact_;  // per block: its friction force at the current sample (sample())
 };
 
 }  // namespace sb
