@@ -37,22 +37,30 @@ def secs(x):
     return f"{x:.0f} s" if x >= 10 else f"{x:.1f} s"
 
 
+def fresh_build(run):
+    """Whether the run started from an empty build tree (recorded by `make reproduce-all`). A
+    record without the field says nothing about it: compiling something does not make a clone
+    fresh (an incremental build after a change compiles too), so such a run is not judged as one."""
+    return bool(run.get("fresh_build", False))
+
+
 def run_lines(runs):
     """Several fresh-clone runs of one commit: this machine's wall times move by ten per cent from
     one run to the next, so the goals are judged on the median run, and every run's total is shown."""
-    if len({(r["commit"], r["tier"], r["compiled_units"] > 0) for r in runs}) != 1:
+    if len({(r["commit"], r["tier"], fresh_build(r)) for r in runs}) != 1:
         raise SystemExit("readme_cost: the --run records differ in commit, tier or build state")
     ranked_runs = sorted(runs, key=lambda r: r["total_s"])
     run = ranked_runs[(len(ranked_runs) - 1) // 2]  # the median (the lower one of an even count)
     ph, tg = run["phases_s"], run["targets_s"]
-    fresh = run["compiled_units"] > 0
+    fresh = fresh_build(run)
     dates = sorted({r["date"] for r in runs})
     where = (f"tier `{run['tier']}`, {run['cores']} cores, commit {run['commit']}"
              f"{' with local changes' if run['dirty'] else ''}, {', '.join(dates)}")
     out = [f"`make reproduce-all` ({where}; `build/reproduce/last_run.json`):", ""]
     total = run["total_s"]
     state = (f"from a fresh clone ({run['compiled_units']} translation units compiled)" if fresh
-             else "with an up-to-date build")
+             else f"in an existing build tree ({run['compiled_units']} translation units compiled)"
+             if run["compiled_units"] else "with an up-to-date build")
     if len(runs) == 1:
         out.append(f"- whole command {secs(total)} {state}")
     else:

@@ -160,7 +160,7 @@ def run_targets(build, tier, logs, listing, describe):
     return 0
 
 
-def write_run_record(rdir, tier, jobs, phases, total, compiled):
+def write_run_record(rdir, tier, jobs, phases, total, compiled, fresh):
     """<build>/reproduce/last_run.json: the wall time of each phase of this run and of each target
     (from timings.json), with the commit, the tier and the core count, so that the README's cost
     figures are read from a file (tools/readme_cost.py) rather than typed."""
@@ -173,7 +173,7 @@ def write_run_record(rdir, tier, jobs, phases, total, compiled):
     record = {"tier": tier, "jobs": jobs, "cores": os.cpu_count(), "commit": git("rev-parse", "--short", "HEAD"),
               "dirty": bool(git("status", "--porcelain", "--untracked-files=no")),
               "date": time.strftime("%Y-%m-%d"), "total_s": total, "phases_s": phases,
-              "compiled_units": compiled,
+              "compiled_units": compiled, "fresh_build": fresh,
               "targets_s": {n: t for n, t in timings.get(tier, {}).items() if n in names}}
     path = os.path.join(rdir, "last_run.json")
     json.dump(record, open(path + ".tmp", "w"), indent=1)
@@ -194,6 +194,9 @@ def main():
     ap.add_argument("--started-at", type=float, default=None, metavar="EPOCH_S",
                     help="when `make reproduce-all` began (before its configure step), so that the "
                          "record's total is the whole command's")
+    ap.add_argument("--fresh-build", action="store_true",
+                    help="the build tree had no CMake cache before this run (set by the Makefile): the "
+                         "run record's whole command is then a fresh clone's cost")
     ap.add_argument("--studies", action="store_true",
                     help="run the optional studies instead and copy their documents to paper/data/")
     a = ap.parse_args()
@@ -261,7 +264,7 @@ def main():
             extra = os.path.join(build, "paper", "report.html")
         phases[step] = time.time() - t
         print(f"  {step:<14}{fmt(phases[step]):>8}   {extra}", flush=True)
-    write_run_record(rdir, tier, a.jobs, phases, time.time() - t_start, compiled)
+    write_run_record(rdir, tier, a.jobs, phases, time.time() - t_start, compiled, a.fresh_build)
     print(f"reproduce-all: done in {fmt(time.time() - t_start)} (tier {tier}); "
           f"verdicts in {os.path.join(rdir, 'summary.tsv')}", flush=True)
     return 0

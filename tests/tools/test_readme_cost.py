@@ -17,9 +17,9 @@ import readme_cost as rc  # noqa: E402
 import summarize  # noqa: E402  (bench/, put on the path by readme_cost)
 
 
-def record(total, targets, commit="abc1234", tier="paper", units=25):
+def record(total, targets, commit="abc1234", tier="paper", units=25, fresh=True):
     return {"commit": commit, "tier": tier, "cores": 2, "dirty": False, "date": "2026-11-24",
-            "compiled_units": units, "total_s": total,
+            "compiled_units": units, "fresh_build": fresh, "total_s": total,
             "phases_s": {"configure": 5.0, "build": 100.0, "targets": targets, "figures": 20.0},
             "targets_s": {"tab_pat0": 0.4 * targets, "fig2": 0.3 * targets, "tab_pat2": 0.3 * targets}}
 
@@ -47,9 +47,19 @@ class RunLines(unittest.TestCase):
 
     def test_runs_that_differ_are_refused(self):
         for other in (record(420.0, 280.0, commit="def5678"), record(420.0, 280.0, tier="quick"),
-                      record(420.0, 280.0, units=0)):
+                      record(420.0, 280.0, fresh=False)):
             with self.assertRaises(SystemExit):
                 rc.run_lines([record(431.0, 294.0), other])
+
+    def test_a_build_that_compiled_is_not_taken_for_a_fresh_clone(self):
+        # A run in an existing tree after a change compiles a few units: no fresh-clone goal then.
+        text = "\n".join(rc.run_lines([record(312.0, 247.0, units=2, fresh=False)]))
+        self.assertIn("whole command 312 s in an existing build tree (2 translation units compiled)", text)
+        self.assertNotIn("fresh clone", text)
+        # A record from before the field existed is not judged as a fresh clone either.
+        old = record(312.0, 247.0, units=25)
+        del old["fresh_build"]
+        self.assertNotIn("fresh clone", "\n".join(rc.run_lines([old])))
 
 
 def bench_json(times):
