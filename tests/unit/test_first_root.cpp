@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <random>
 
@@ -69,7 +70,9 @@ TEST(FirstRoot, QuarticsLikeTheContinuousExtensionTakeFewEvaluations) {
     bisect(std::ref(cb), lo, hi, w);
     bisect_total += cb.evals;
   }
-  // Measured: 7.7 evaluations on average against 27.5 for the bisection.
+  // Printed so the figure the README quotes comes from this run (7.7 against 27.5 when written).
+  std::printf("first_root: %.1f evaluations per root on average, bisection %.1f\n",
+              static_cast<double>(total) / trials, static_cast<double>(bisect_total) / trials);
   EXPECT_LT(static_cast<double>(total) / trials, 10.0);
   EXPECT_GT(static_cast<double>(bisect_total) / trials, 20.0);
 }

@@ -26,14 +26,13 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
     record(c, s, s.presummed.abs / cfg_.F_load, s.presummed.signed_sum / cfg_.F_load, s.presummed.n_sliding);
     return;
   }
-  // The contact blocks, listed once (and as runs of consecutive blocks): grooves carry no
-  // friction and are skipped without a test.
-  if (contacts_.empty() && c.n_contact > 0) {
+  // The contact blocks, listed once as runs of consecutive blocks: grooves carry no friction
+  // and are skipped without a test.
+  if (contact_runs_.empty() && c.n_contact > 0) {
     for (int i = 0; i < c.N; ++i) {
       if (!c.contact[i]) continue;
-      if (contacts_.empty() || contacts_.back() != i - 1) contact_runs_.push_back({i, i + 1});
+      if (contact_runs_.empty() || contact_runs_.back().second != i) contact_runs_.push_back({i, i + 1});
       else contact_runs_.back().second = i + 1;
-      contacts_.push_back(i);
     }
     f_contact_.assign(c.N, 0.0);
   }
@@ -97,19 +96,20 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   // A stretch feeds the statistics, the series and the stress snapshots alike (record_stretch),
   // so keeping mu(t) or taking snapshots never changes mu_s or mu_d (they were once served one
   // by one and differed in the last bits: FrictionObserver.KeepingTheSeriesChangesNoStatistic*).
-  if (n <= 0 || contacts_.empty()) return 0;
+  if (n <= 0 || contact_runs_.empty()) return 0;
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
   const double t_first = t_of(k0);
   // The stretch ends before the first sample at which some block's force changes sign.
   double A = 0, B = 0, As = 0, Bs = 0, t_sign = std::numeric_limits<double>::infinity();
   int n_sliding = 0;  // constant across the stretch: nothing switches in it
-  for (int i : contacts_) {
-    const double f0 = a[i] + b[i] * t_first, sg = f0 >= 0 ? 1.0 : -1.0;
-    if (b[i] != 0.0 && (b[i] > 0) != (sg > 0)) t_sign = std::min(t_sign, -a[i] / b[i]);
-    A += sg * a[i], B += sg * b[i];
-    As += a[i], Bs += b[i];
-    n_sliding += s.dir[i] != 0;
-  }
+  for (const auto& [lo, hi] : contact_runs_)
+    for (int i = lo; i < hi; ++i) {
+      const double f0 = a[i] + b[i] * t_first, sg = f0 >= 0 ? 1.0 : -1.0;
+      if (b[i] != 0.0 && (b[i] > 0) != (sg > 0)) t_sign = std::min(t_sign, -a[i] / b[i]);
+      A += sg * a[i], B += sg * b[i];
+      As += a[i], Bs += b[i];
+      n_sliding += s.dir[i] != 0;
+    }
   long m = n;
   while (m > 0 && t_of(k0 + m - 1) >= t_sign) --m;  // usually none: forces rarely change sign
   if (m <= 0) return 0;
@@ -169,7 +169,7 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
 
 long FrictionObserver::sample_sums(const Chain& c, const State&, long k0, double dt, long n,
                                    SampleStretch& stretch) {
-  if (!slipped_ || n <= 0 || contacts_.empty() || wants_stop()) return 0;
+  if (!slipped_ || n <= 0 || contact_runs_.empty() || wants_stop()) return 0;
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
   const double t_win = t_slip_ + cfg_.mu_d_skip_s;
   const bool before = t_of(k0 + n - 1) < t_win, inside = t_of(k0) >= t_win;

@@ -100,8 +100,8 @@ class FrictionObserver final : public Observer {
   std::size_t next_stress_ = 0;
   std::vector<Sample> series_;
   std::vector<StressSnapshot> stress_;
-  std::vector<int> contacts_;  // indices of the contact blocks, built on the first sample
-  std::vector<std::pair<int, int>> contact_runs_;  // the same as runs [lo, hi) of consecutive blocks
+  // The contact blocks as runs [lo, hi) of consecutive blocks, built on the first sample.
+  std::vector<std::pair<int, int>> contact_runs_;
   std::vector<double> f_contact_;  // per block: its friction force at the current sample (sample())
 };
 

@@ -3,15 +3,15 @@
 #include <cmath>
 
 #include "springblock/integrate/events/first_root.hpp"
+#include "springblock/integrate/round_off.hpp"
 
 namespace sb::event_detail {
 namespace {
 
-// Done when the bracket spans round-off in t: (hi - lo) h <= 4e-16 |t + hi h|, in units of the
-// step (theta).
+// Done when the bracket spans round-off in t (round_off.hpp), in units of the step (theta).
 struct RoundOff {
   double t, h;
-  double operator()(double hi) const { return 4e-16 * std::fabs(t + hi * h) / h; }
+  double operator()(double hi) const { return time_round_off(t + hi * h) / h; }
 };
 
 }  // namespace

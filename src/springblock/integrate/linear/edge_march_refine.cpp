@@ -5,6 +5,7 @@
 
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/round_off.hpp"
 
 namespace sb::event_detail {
 
@@ -84,7 +85,7 @@ double EdgeMarch::shrink(const double* q0, const double* p0, double fs, double t
   const bool have = x != kInf;  // x, gx, dgx: the last evaluation (from it > 0 on, or given)
   double w_before = kInf;
   for (int it = 0; it < 200; ++it) {
-    const double w = hi - lo, tol = 4e-16 * std::fabs(t0 + hi);
+    const double w = hi - lo, tol = time_round_off(t0 + hi);
     if (!(w > tol)) break;
     double mid = kInf;
     if ((it > 0 || have) && dgx != 0 && !(was_newton && w > 0.5 * w_before)) {

@@ -10,6 +10,7 @@
 #include "springblock/integrate/events/switching.hpp"
 #include "springblock/sample_schedule.hpp"
 #include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/round_off.hpp"
 
 namespace sb::event_detail {
 namespace {
@@ -138,7 +139,7 @@ double Solver::first_stop(int i) {
   };
   auto bisect = [&](double lo, double hi) {
     double x, xd;
-    for (int it = 0; it < 200 && hi - lo > 4e-16 * std::fabs(b.t_ref + hi); ++it) {
+    for (int it = 0; it < 200 && hi - lo > time_round_off(b.t_ref + hi); ++it) {
       const double mid = 0.5 * (lo + hi);
       (g(mid, x, xd) > 0 ? lo : hi) = mid;
     }

@@ -1,0 +1,12 @@
+#pragma once
+// How finely every event refinement resolves a time: a bracket ending near time t is done once it
+// is no wider than 4e-16 |t|, about two ulp of t, below which the integrators' times cannot tell
+// two instants apart. One rule for the Dormand-Prince event search (first_root.hpp), the modal
+// searches (EdgeMarch) and the per-block solver of uncoupled chains, so they stop alike.
+#include <cmath>
+
+namespace sb {
+
+inline double time_round_off(double t) { return 4e-16 * std::fabs(t); }
+
+}  // namespace sb
