@@ -44,7 +44,7 @@ double EdgeMarch::grid_step(double omega_max) { return kGrid / omega_max; }
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const double* P) {
   const double omega = std::sqrt(mode.omega2);
-  modes_.push_back({w, omega, omega + 2.0 * mode.alpha, fastest_rate(mode, omega), mode, index});
+  modes_.push_back({omega, omega + 2.0 * mode.alpha, fastest_rate(mode, omega), mode, index});
   w_.push_back(w);
   p00_.push_back(P[0]), p01_.push_back(P[1]), p10_.push_back(P[2]), p11_.push_back(P[3]);
 }
@@ -118,7 +118,7 @@ EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) const {
   for (std::size_t k = 0; k < modes_.size(); ++k) {
     const Mode& m = modes_[k];
     // Energy bounds |qd| <= E, |q| <= E / omega, |q''| = |gamma qd + omega^2 q| <= (gamma + omega) E.
-    const double E = std::fabs(m.w) * std::sqrt(qd[k] * qd[k] + m.omega * m.omega * q[k] * q[k]);
+    const double E = std::fabs(w_[k]) * std::sqrt(qd[k] * qd[k] + m.omega * m.omega * q[k] * q[k]);
     B.sb += E;
     B.mb += E / m.omega;
     B.m2 += m.m2 * E;

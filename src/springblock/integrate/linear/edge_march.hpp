@@ -87,7 +87,7 @@ class EdgeMarch {
  private:
   static constexpr int kTaylor = 20;  // order of the local polynomial (see the header)
   struct Mode {
-    double w, omega, m2;  // weight, sqrt(omega^2), (omega + gamma) for the |q''| bound
+    double omega, m2;     // sqrt(omega^2), (omega + gamma) for the |q''| bound (the weight: w_)
     double rate;          // largest |eigenvalue| of the mode: omega, or alpha + kappa if overdamped
     DampedMode mode;
     int index;
@@ -129,9 +129,10 @@ class EdgeMarch {
   void local_eval(double tau, double& F, double& dF);
 
   std::vector<Mode> modes_;
-  // The grid step's hot data apart, one array each (structure of arrays): the weights and each
-  // mode's transition over H, [q, qd](tau + H) = [[p00, p01], [p10, p11]] [q, qd](tau), so the
-  // transition vectorises and a grid step reads only what it uses.
+  // The grid step's hot data apart, one array each (structure of arrays): the modes' weights in
+  // the force (their only copy) and each mode's transition over H,
+  // [q, qd](tau + H) = [[p00, p01], [p10, p11]] [q, qd](tau), so the transition vectorises and a
+  // grid step reads only what it uses.
   std::vector<double> w_, p00_, p01_, p10_, p11_;
   std::vector<double> q_, qd_;    // the modes at the march's current point
   std::vector<double> qn_, qdn_;  // at the next grid point

@@ -25,11 +25,11 @@ void EdgeMarch::expand(const double* q0, const double* p0, double tau_base) {
     const Mode& m = modes_[k];
     const double gamma = 2.0 * m.mode.alpha, w2 = m.mode.omega2;
     double d0 = q[k], d1 = qd[k];
-    coef_[0] += m.w * d0;
-    coef_[1] += m.w * d1;
+    coef_[0] += w_[k] * d0;
+    coef_[1] += w_[k] * d1;
     for (int j = 2; j <= kTaylor; ++j) {
       const double d2 = -gamma * d1 - w2 * d0;
-      coef_[j] += m.w * d2;
+      coef_[j] += w_[k] * d2;
       d0 = d1, d1 = d2;
     }
   }
@@ -51,7 +51,7 @@ void EdgeMarch::gap(const double* q0, const double* p0, double fs, double tau, d
   } else {
     direct(q0, p0, tau);
     F = a_ + b_ * tau, dF = b_;
-    for (std::size_t k = 0; k < modes_.size(); ++k) F += modes_[k].w * q_[k], dF += modes_[k].w * qd_[k];
+    for (std::size_t k = 0; k < modes_.size(); ++k) F += w_[k] * q_[k], dF += w_[k] * qd_[k];
   }
   g = fs - measure(F);
   dg = (sense_ == Sense::Abs && F < 0) ? dF : -dF;
