@@ -48,8 +48,9 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
   for (const auto& [lo, hi] : contact_runs_) {
     const int first = std::max(lo, 1), last = std::min(hi, c.N - 1);
     if (first < last) stuck_forces(k, first, last, c.v_slider * s.t, u, f);
-    for (int i : {lo, hi - 1})
-      if (i == 0 || i == c.N - 1) f[i] = c.driving_force(i, u, s.v.data(), s.t);
+    // A chain end's force by the checked form; a one-block run at an end is taken once.
+    if (lo == 0 || lo == c.N - 1) f[lo] = c.driving_force(lo, u, s.v.data(), s.t);
+    if (hi - 1 != lo && hi == c.N) f[hi - 1] = c.driving_force(hi - 1, u, s.v.data(), s.t);
     for (int i = lo; i < hi; ++i) {
       double fi = f[i];
       if (dir[i] != 0) {
