@@ -13,7 +13,7 @@ Checked: accuracy_cost's figure and report table show these rows with the commit
 #include "work_precision.hpp"
 
 int main(int argc, char** argv) {
-  const auto settings = repro::work_precision_settings({5e-8, 2.5e-8}, {}, false);
+  const auto settings = repro::work_precision_settings({5e-8, 2.5e-8}, {}, {}, false);
   return repro::run_target(
       argc, argv, "rk4_refinement", "work-precision of RK4 below the paper's step (optional study)",
       [&](const repro::Context& ctx) { return repro::work_precision_plan(ctx, settings); },

@@ -23,24 +23,36 @@ const nlohmann::json* find_reference(const nlohmann::json& scenes, const std::st
 
 double num(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
 
+// The name a work-precision row gives its method: one line per method in the figure.
+std::string method_label(const WorkPrecisionSetting& st) {
+  if (st.method == sb::Method::RK4) return "rk4";
+  return "event " + sb::stepper_name(st.stepper);
+}
+
 }  // namespace
 
 std::vector<WorkPrecisionSetting> work_precision_settings(const std::vector<double>& rk4_steps_s,
-                                                          const std::vector<double>& event_tols, bool with_check) {
+                                                          const std::vector<double>& dopri5_tols,
+                                                          const std::vector<double>& exact_tols, bool with_check) {
   std::vector<WorkPrecisionSetting> s;
   char name[64];
   for (double h : rk4_steps_s) {
     std::snprintf(name, sizeof name, "rk4 h=%.3gs", h);
     s.push_back({name, sb::Method::RK4, h, 1e-9});  // tol unused by RK4, kept valid
   }
-  for (double tol : event_tols) {
-    std::snprintf(name, sizeof name, "event tol=%.0e", tol);
+  for (double tol : dopri5_tols) {
+    std::snprintf(name, sizeof name, "dopri5 tol=%.0e", tol);
     s.push_back({name, sb::Method::Event, 1e-7, tol});
   }
-  if (with_check) s.push_back({"event tol=1e-11 (reference check)", sb::Method::Event, 1e-7, 1e-11, false, true});
-  s.push_back({"event tol=1e-12 (reference)", sb::Method::Event, 1e-7, 1e-12, true, false});
+  for (double tol : exact_tols) {
+    std::snprintf(name, sizeof name, "exact tol=%.0e", tol);
+    s.push_back({name, sb::Method::Event, 1e-7, tol, false, false, sb::Stepper::Exact});
+  }
+  if (with_check) s.push_back({"dopri5 tol=1e-11 (reference check)", sb::Method::Event, 1e-7, 1e-11, false, true});
+  s.push_back({"dopri5 tol=1e-12 (reference)", sb::Method::Event, 1e-7, 1e-12, true, false});
   return s;
 }
+
 
 std::vector<LabelledScene> work_precision_plan(const Context& ctx, const std::vector<WorkPrecisionSetting>& settings) {
   std::vector<LabelledScene> out;
@@ -52,6 +64,7 @@ std::vector<LabelledScene> work_precision_plan(const Context& ctx, const std::ve
       ls.scene.run.method = st.method;
       ls.scene.run.dt_s = st.dt_s;
       ls.scene.run.tol = st.tol;
+      ls.scene.run.stepper = st.stepper;
       if (peak) {
         // Three seeds suffice: the per-seed error is deterministic, not a statistic.
         ls.scene.reps = std::min(ls.scene.reps, 3);
@@ -62,7 +75,7 @@ std::vector<LabelledScene> work_precision_plan(const Context& ctx, const std::ve
       ls.id = std::string(study) + ":" + st.name;
       ls.label = st.name;
       ls.x = {{"study", study},          {"setting", st.name},
-              {"method", sb::method_name(st.method)}, {"dt_s", st.dt_s},
+              {"method", method_label(st)}, {"dt_s", st.dt_s},
               {"tol", st.tol},           {"reference", st.reference},
               {"reference_check", st.reference_check}};
       try {

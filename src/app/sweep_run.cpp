@@ -179,7 +179,10 @@ int run_sweep(const SweepOptions& o, const std::string& command_line) {
     scenes = sweep::expand(sweep::read_spec(o.file));  // on every rank: a unit id means the same there
   } catch (const InputError&) {
     if (lead) throw;
-    return shell::kBadInput;  // rank 0 found the same and says so
+    // Rank 0 found the same, says so and exits with kBadInput, which mpirun then returns. A
+    // worker that exited non-zero first made mpirun abort the job, at times before rank 0 had
+    // printed a word (seen under load in cli_sweep_mpi): it leaves quietly instead.
+    return 0;
   }
   const auto units = sweep::make_units(scenes);
   std::unique_ptr<sweep::Checkpoint> cp;
@@ -193,7 +196,7 @@ int run_sweep(const SweepOptions& o, const std::string& command_line) {
     }
   if (!sched->agree(!refused)) {
     if (refused) std::rethrow_exception(refused);
-    return shell::kBadInput;
+    return lead ? shell::kBadInput : 0;  // a worker leaves quietly, as above
   }
   const auto* interrupt = shell::catch_interrupts();
   auto run_unit = [&](int id, const std::atomic<bool>* stop) { return sweep::run_unit(scenes, units, id, stop); };

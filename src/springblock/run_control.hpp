@@ -10,6 +10,13 @@ enum class Method { RK4, Event };
 std::string method_name(Method m);
 Method parse_method(const std::string& text);  // throws InputError("method")
 
+// How the event method moves the runs that something slides in: by their exact modes, or by
+// Dormand-Prince 5(4) steps under the tolerance (the stepper before the exact one, kept as a
+// reference).
+enum class Stepper { Exact, Dopri5 };
+std::string stepper_name(Stepper s);
+Stepper parse_stepper(const std::string& text);  // throws InputError("stepper")
+
 // How the macroscopic coefficients are read off mu(t). See paper/choices.md.
 struct ExtractionRules {
   // Where the loading phase ends; mu_s is the largest mu(t) reached before that moment.
@@ -44,6 +51,11 @@ struct RunControl {
   // too. Separate from modal_max_run because a groove run has no stop events: it pays off up to
   // much longer runs (bench_methods, modal_groove/*).
   int modal_max_groove = 32;
+  // event method: the stepped runs move by their modes (Stepper::Exact) while none is longer than
+  // exact_max_run blocks, and by Dormand-Prince steps otherwise (a run's projection costs O(n^2)
+  // at each switch); Stepper::Dopri5 always steps them. See paper/choices.md (Integration).
+  Stepper stepper = Stepper::Exact;
+  int exact_max_run = 64;
   // Run length in units of t0 = (mu_s)_m F_n / (K_s v), the time the slider needs to load an
   // average block to its threshold. Scaling with t0 keeps the number of stick-slip cycles the
   // same when the contact fraction (hence F_n) changes. duration_s > 0 overrides.

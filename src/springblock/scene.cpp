@@ -18,6 +18,14 @@ Method parse_method(const std::string& text) {
   throw InputError("method", "'" + text + "' is not one of: rk4, event");
 }
 
+std::string stepper_name(Stepper s) { return s == Stepper::Exact ? "exact" : "dopri5"; }
+
+Stepper parse_stepper(const std::string& text) {
+  if (text == "exact") return Stepper::Exact;
+  if (text == "dopri5") return Stepper::Dopri5;
+  throw InputError("stepper", "'" + text + "' is not one of: exact, dopri5");
+}
+
 double Scene::t0_s() const {
   const auto d = derived();
   auto mask = contact_mask(pattern, geometry.N, 0);

@@ -58,7 +58,8 @@ std::uint64_t rep_seed(std::uint64_t seed, int rep);
 // every results file and series header carries, with its derived parameters, t0 and duration.
 void to_json(nlohmann::json& j, const Scene& s);
 // The entries of the results schema that repeat a scene's (reps, seed, method, dt, tol,
-// modal_max_run, modal_max_groove, duration), taken from its JSON `scene` under the schema's names.
+// modal_max_run, modal_max_groove, stepper, exact_max_run, duration), taken from its JSON `scene`
+// under the schema's names.
 nlohmann::json schema_entries(const nlohmann::json& scene);
 // Overlay the keys present in `j` onto `s` (scene files). Unknown keys are an InputError.
 void apply_scene_json(Scene& s, const nlohmann::json& j);

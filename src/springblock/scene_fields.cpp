@@ -154,6 +154,14 @@ std::vector<Entry> integration_entries() {
        if (n < 0 || n > 64) throw InputError(k, "modal_max_groove = " + v + " is outside [0, 64]");
        s.run.modal_max_groove = static_cast<int>(n);
      }},
+    {{"stepper", "event method: how sliding runs move: exact (default; by their modes, no step-size error) or dopri5 (Dormand-Prince steps under --tol)", "dopri5"},
+     [](Scene& s, auto&, auto& v) { s.run.stepper = parse_stepper(v); }},
+    {{"exact_max_run", "event method, exact stepper: longest run it moves by its modes; longer ones are stepped by Dormand-Prince (default 64)", "64"},
+     [](Scene& s, auto& k, auto& v) {
+       const auto n = integer(k, v);
+       if (n < 1 || n > 512) throw InputError(k, "exact_max_run = " + v + " is outside [1, 512]");
+       s.run.exact_max_run = static_cast<int>(n);
+     }},
   };
 }
 

@@ -23,6 +23,8 @@ void to_json(nlohmann::json& j, const Scene& s) {
                      {"tol", s.run.tol},
                      {"modal_max_run", s.run.modal_max_run},
                      {"modal_max_groove", s.run.modal_max_groove},
+                     {"stepper", stepper_name(s.run.stepper)},
+                     {"exact_max_run", s.run.exact_max_run},
                      {"duration_s", s.duration()},
                      {"t0_s", s.t0_s()},
                      {"sample_dt_s", s.run.sample_dt_s},
@@ -43,6 +45,8 @@ nlohmann::json schema_entries(const nlohmann::json& scene) {
           {"tol", scene.at("tol")},
           {"modal_max_run", scene.at("modal_max_run")},
           {"modal_max_groove", scene.at("modal_max_groove")},
+          {"stepper", scene.at("stepper")},
+          {"exact_max_run", scene.at("exact_max_run")},
           {"duration", scene.at("duration_s")}};
 }
 

@@ -22,6 +22,8 @@ std::optional<TrajectorySpec> trajectory_spec(const Scene& s) {
   t.tol = s.run.tol;
   t.modal_max_run = s.run.modal_max_run;
   t.modal_max_groove = s.run.modal_max_groove;
+  t.stepper = s.run.stepper;
+  t.exact_max_run = s.run.exact_max_run;
   t.sample_dt_s = s.run.sample_dt_s;
   return t;
 }
@@ -36,7 +38,8 @@ auto members(const TrajectorySpec& t) {
   return std::make_tuple(m.G_Pa, m.E_Pa, m.rho_kg_per_m3, m.P_Pa, m.gamma_per_s, m.v_m_per_s, m.l_y_m,
                          m.l_z_m, t.geometry.N, t.geometry.L_x_m, t.k_int_scale, f.mu_s_mean, f.mu_s_sd,
                          f.mu_d_mean, f.mu_d_sd, f.pair_policy, t.pattern.text(), t.pattern.layout, t.seed,
-                         t.reps, t.method, t.dt_s, t.tol, t.modal_max_run, t.modal_max_groove, t.sample_dt_s);
+                         t.reps, t.method, t.dt_s, t.tol, t.modal_max_run, t.modal_max_groove, t.stepper,
+                         t.exact_max_run, t.sample_dt_s);
 }
 
 }  // namespace

@@ -44,6 +44,8 @@ struct TrajectorySpec {
   Method method = Method::Event;
   double dt_s = 0, tol = 0;
   int modal_max_run = 0, modal_max_groove = 0;
+  Stepper stepper = Stepper::Exact;
+  int exact_max_run = 0;
   // The sample times are points the event method steps to and where RK4's stride lands, and the
   // FanOut hands the same grid to every view.
   double sample_dt_s = 0;

@@ -18,9 +18,9 @@ namespace sb {
 #define SB_WORK_COUNTS(X)                                                                                     \
   X(slip_events, "quiet phases begun after something slid: one per slip event (avalanche), event method")      \
   X(slip_starts, "block-slip episodes: a contact block starts to slide")                                       \
-  X(stepped_attempts, "Dormand-Prince trial steps (accepted, rejected and redone to an event)")                \
+  X(stepped_attempts, "steps of the moving runs (exact or Dormand-Prince trials: accepted, rejected, redone)")   \
   X(rejected_steps, "trial steps rejected by the error control")                                               \
-  X(event_steps, "steps redone to end exactly at a located event")                                             \
+  X(event_steps, "steps ended at a located event (Dormand-Prince: redone to it)")                                \
   X(block_steps, "blocks integrated, summed over trial steps (the stepping work)")                             \
   X(exact_jumps, "jumps to the next closed-form event or sample with nothing to step")                         \
   X(switch_instants, "instants at which the switching rules were applied")                                      \
@@ -30,8 +30,8 @@ namespace sb {
 
 // name, meaning. Seconds of one run (0 unless timed).
 #define SB_WORK_TIMES(X)                                                                                   \
-  X(stepping_s, "Dormand-Prince trial steps of the moving runs")                                            \
-  X(event_location_s, "search of each accepted step's continuous extension for switches")                   \
+  X(stepping_s, "steps of the moving runs (exact: projections and modes; or Dormand-Prince trials)")         \
+  X(event_location_s, "search of each step for switches (exact: span screen; Dormand-Prince: dense output)") \
   X(switching_s, "switching rules, reclassification of the runs and their exact event times")              \
   X(quiet_s, "quiet phases: projection onto the grooves' modes and the next threshold crossing")           \
   X(sampling_s, "samples: bringing exact runs to the sample time and the observer")

@@ -1,6 +1,7 @@
-// Tests of the event-driven integrator (Dormand-Prince 5(4) with located switching events and
-// an exact quiet-phase propagator). References: the closed-form single-block cycle, the stepper
-// itself at a much tighter tolerance, and the paper's RK4 at two step sizes.
+// Tests of the event-driven integrator (the exact stepper or Dormand-Prince 5(4) with located
+// switching events, and an exact quiet-phase propagator). References: the closed-form
+// single-block cycle, the Dormand-Prince stepper at a much tighter tolerance, and the paper's RK4
+// at two step sizes. The exact stepper's own tests are in test_exact_stepper.cpp.
 #include "springblock/integrate/methods/event_driven.hpp"
 
 #include <gtest/gtest.h>
@@ -248,6 +249,8 @@ TEST(EventIntegrator, ModalRunsAgreeWithStepping) {
     sb::Scene sc = small_scene(40, "periodic:1,1");
     if (std::string(damping) == "undamped") sc.material.gamma_per_s = 0;
     sb::EventDriven modal(1e-9, true), stepped(1e-11, true);
+    modal.set_exact_stepper(false);  // the modal runs against Dormand-Prince steps
+    stepped.set_exact_stepper(false);
     modal.set_modal_max_run(4);
     stepped.set_modal_max_run(0);
     stepped.set_modal_max_groove(0);
@@ -280,6 +283,7 @@ TEST(EventIntegrator, ModalGrooveRunsAgreeWithStepping) {
     sb::EventDriven modal(1e-9, true), stepped(1e-9, true), reference(1e-11, true);
     modal.set_modal_max_run(0);
     modal.set_modal_max_groove(32);
+    for (sb::EventDriven* e : {&modal, &stepped, &reference}) e->set_exact_stepper(false);  // Dormand-Prince steps
     for (sb::EventDriven* e : {&stepped, &reference}) {
       e->set_modal_max_run(0);
       e->set_modal_max_groove(0);
@@ -416,6 +420,8 @@ TEST(EventIntegrator, CreepingBlocksInModalRunsDoNotStutter) {
   sc.material.gamma_per_s = 0;
   sc.friction.mu_d_mean = 0.9;
   sb::EventDriven modal(1e-9, true), stepped(1e-11, true);
+  modal.set_exact_stepper(false);  // the modal runs against Dormand-Prince steps
+  stepped.set_exact_stepper(false);
   modal.set_modal_max_run(2);
   stepped.set_modal_max_run(0);
   stepped.set_modal_max_groove(0);

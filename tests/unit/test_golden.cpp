@@ -72,7 +72,8 @@ Scene base(const char* pattern, Method m, int N, double length_m, double duratio
 
 // One scene per path through the integrators: RK4 (smooth, periodic), the event method on every
 // surface kind, its decoupled solver (K_int = 0), undamped modal runs, the drop rule, and a
-// non-default layout.
+// non-default layout; its Dormand-Prince stepper, and the exact stepper falling back to it for
+// long runs.
 std::vector<Case> cases() {
   std::vector<Case> out;
   out.push_back({"rk4_smooth", base("smooth", Method::RK4, 40, 0.008, 1.2)});
@@ -105,6 +106,16 @@ std::vector<Case> cases() {
     s.rules.peak_rule = ExtractionRules::PeakRule::Drop;
     s.pattern.layout = parse_layout("groove_first");
     out.push_back({"event_drop_groove_first_3_3", s});
+  }
+  {
+    Scene s = base("periodic:10,10", Method::Event, 360, 0.072, 1.2);
+    s.run.stepper = Stepper::Dopri5;
+    out.push_back({"event_dopri5_periodic_10_10", s});
+  }
+  {
+    Scene s = base("smooth", Method::Event, 120, 0.024, 1.5);
+    s.run.exact_max_run = 4;
+    out.push_back({"event_exact_max_run_4_smooth", s});
   }
   return out;
 }

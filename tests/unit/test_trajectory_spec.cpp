@@ -47,6 +47,8 @@ const Verdict kVerdicts[] = {
     {"tol", "1e-9", true},
     {"modal_max_run", "3", true},
     {"modal_max_groove", "8", true},
+    {"stepper", "dopri5", true},
+    {"exact_max_run", "16", true},
     {"sample_dt", "2e-2ms", true},
     // What is read off the trajectory or recorded, and who runs it.
     {"duration", "2t0", false},

@@ -14,6 +14,7 @@ std::unique_ptr<Integrator> make_integrator(const RunControl& rc) {
       auto e = std::make_unique<EventDriven>(rc.tol);
       e->set_modal_max_run(rc.modal_max_run);
       e->set_modal_max_groove(rc.modal_max_groove);
+      e->set_exact_stepper(rc.stepper == Stepper::Exact, rc.exact_max_run);
       return e;
     }
   }

@@ -67,9 +67,14 @@ class ActiveSet {
   double settled_u(int i, double t) const { return paths_.u(i, t); }
   // Displacement of a block in a modal run at time t.
   double modal_u(int i, double t) const { return modal_.u(i, t); }
+  // Its Taylor polynomial about t (ModalRuns::row_taylor).
+  void modal_taylor(int i, double t, int deg, double* c) { modal_.row_taylor(i, t, deg, c); }
+  // Velocity of a settled groove block (its path's slope).
+  double settled_drift(int i) const { return paths_.drift(i); }
   // Its affine path and a bound on its deviation from it (ModalRuns::amplitude).
   double modal_affine_u(int i, double t) const { return modal_.affine_u(i, t); }
   double modal_amplitude(int i) const { return modal_.amplitude(i); }
+  double modal_affine_slope(int i) const { return modal_.affine_slope(i); }
   // Block i has a modal run beside it (K_int > 0).
   bool beside_modal(int i) const;
 

@@ -75,7 +75,7 @@ void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit
     f = modal_.crossing_time(c, s, i, base, nb_B, limit);
   }
   // Cut off at the limit: search again from there if it ever becomes the next event.
-  events_.set(i, std::isfinite(f.t) ? f.t : f.limited ? limit : kInf, !std::isfinite(f.t) && f.limited);
+  events_.set(i, std::isfinite(f.t) ? f.t : f.limited ? f.resume : kInf, !std::isfinite(f.t) && f.limited);
 }
 
 void ActiveSet::finish_events(const Chain& c, const State& s) {

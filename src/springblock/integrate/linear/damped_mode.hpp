@@ -10,6 +10,26 @@
 
 namespace sb::event_detail {
 
+// A sum of modes as a Taylor polynomial about a point, c[j] = F^(j) / j!, j = 0 .. deg, F =
+// sum_k w_k q_k: each mode's derivatives follow from its equation, q^(j+2) = -gamma q^(j+1) -
+// omega^2 q^(j), so they cost two flops each. add_taylor adds w times mode (q, qd)'s derivatives
+// to c[0 .. deg]; taylor_scale then divides c[j] by j! (c[0] and c[1] are F and F' already).
+// Shared by the searches that refine a root on the polynomial (EdgeMarch, the exact stepper).
+inline void add_taylor(double w, double q, double qd, double gamma, double omega2, int deg, double* c) {
+  double d0 = q, d1 = qd;
+  c[0] += w * d0;
+  c[1] += w * d1;
+  for (int j = 2; j <= deg; ++j) {
+    const double d2 = -gamma * d1 - omega2 * d0;
+    c[j] += w * d2;
+    d0 = d1, d1 = d2;
+  }
+}
+inline void taylor_scale(int deg, double* c) {
+  double inv_fact = 1.0;
+  for (int j = 2; j <= deg; ++j) inv_fact /= j, c[j] *= inv_fact;
+}
+
 // The state transition of a mode over a fixed interval dt, row-major:
 //   (q, q')(tau + dt) = [[P0, P1], [P2, P3]] (q, q')(tau).
 using Transition = std::array<double, 4>;

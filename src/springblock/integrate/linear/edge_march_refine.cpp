@@ -21,20 +21,9 @@ void EdgeMarch::expand(const double* q0, const double* p0, double tau_base) {
   coef_[0] = a_ + b_ * tau_base;
   coef_[1] = b_;
   for (int j = 2; j <= kTaylor; ++j) coef_[j] = 0.0;
-  for (std::size_t k = 0; k < modes_.size(); ++k) {
-    const Mode& m = modes_[k];
-    const double gamma = 2.0 * m.mode.alpha, w2 = m.mode.omega2;
-    double d0 = q[k], d1 = qd[k];
-    coef_[0] += w_[k] * d0;
-    coef_[1] += w_[k] * d1;
-    for (int j = 2; j <= kTaylor; ++j) {
-      const double d2 = -gamma * d1 - w2 * d0;
-      coef_[j] += w_[k] * d2;
-      d0 = d1, d1 = d2;
-    }
-  }
-  double inv_fact = 1.0;
-  for (int j = 2; j <= kTaylor; ++j) inv_fact /= j, coef_[j] *= inv_fact;
+  for (std::size_t k = 0; k < modes_.size(); ++k)
+    add_taylor(w_[k], q[k], qd[k], 2.0 * modes_[k].mode.alpha, modes_[k].mode.omega2, kTaylor, coef_);
+  taylor_scale(kTaylor, coef_);
 }
 
 void EdgeMarch::local_eval(double tau, double& F, double& dF) {

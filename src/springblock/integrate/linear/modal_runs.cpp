@@ -1,6 +1,7 @@
 #include "springblock/integrate/linear/modal_runs.hpp"
 #include "springblock/integrate/linear/envelope.hpp"
 #include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/round_off.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +13,6 @@ namespace {
 // The sample recurrence restarts from the closed form this often, so its round-off never
 // accumulates (the same rule as the quiet phase's samples).
 constexpr int kSampleResync = 64;
-// Round-off margin of a stop, in units of the slider velocity (see the header).
-constexpr double kStopMargin = 1e-12;
 
 }  // namespace
 
@@ -201,58 +200,6 @@ void ModalRuns::materialise_run(int i, double t, double* u, double* v) {
   Run& r = runs_[run_of_[i]];
   scratch_at(r, t);
   rows(r, t, cq_.data() + r.lo, cp_.data() + r.lo, 0, r.hi - r.lo, 1, u, v);
-}
-
-ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, bool fresh, double t_limit) {
-  Run& r = runs_[run_of_[i]];
-  const int n = r.hi - r.lo, row = i - r.lo;
-  const double dir = s.dir[i];
-  // The velocity v = B + sum Q q_k' and each q_k' is a damped mode started from (q', q'') at
-  // s.t. Event: -dir (v - B) >= dir B + eps_v, i.e. dir v <= -eps_v.
-  scratch_at(r, s.t);
-  double v = B_[i];
-  march_.reset();
-  for (int k = 0; k < n; ++k) {
-    const int slot = r.lo + k;
-    const DampedMode& m = r.basis->run->modes[k];
-    vq_[slot] = cp_[slot];
-    va_[slot] = -c.gamma * cp_[slot] - m.omega2 * cq_[slot];
-    v += r.basis->run->Q(row, k) * cp_[slot];
-    march_.add_mode(-dir * r.basis->run->Q(row, k), m, slot, r.basis->grid[k].data());
-  }
-  march_.finish(H_);
-  march_.set_affine(0.0, 0.0);
-  // A block that has just started to slide sits at v = 0 exactly (see EdgeMarch's open origin).
-  march_.set_sense(EdgeMarch::Sense::Upper, fresh ? dir * s.v[i] <= 0.0 : dir * v <= 0.0);
-  const double tau = march_.first_crossing(vq_.data(), va_.data(), dir * B_[i] + eps_v_, t_limit - s.t, s.t);
-  return {s.t + tau, march_.hit_limit};
-}
-
-ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j, const double base[2],
-                                          const double nb_B[2], double t_limit) {
-  march_.reset();
-  double a = c.K_s * (c.v_slider * s.t - s.u[j]), b = c.K_s * c.v_slider;
-  for (int side = 0; side < 2; ++side) {
-    const int nb = side == 0 ? j - 1 : j + 1;
-    if (nb < 0 || nb >= N_) continue;
-    if (run_of_[nb] < 0) {
-      a += K_int_ * (base[side] - s.u[j]);
-      b += K_int_ * nb_B[side];
-      continue;
-    }
-    Run& r = runs_[run_of_[nb]];
-    const int n = r.hi - r.lo, row = nb - r.lo;
-    // The run's coordinates at s.t (its own origin may be older: it was kept across switches).
-    scratch_at(r, s.t);
-    a += K_int_ * (A_[nb] + B_[nb] * s.t - s.u[j]);
-    b += K_int_ * B_[nb];
-    for (int k = 0; k < n; ++k) march_.add_mode(K_int_ * r.basis->run->Q(row, k), r.basis->run->modes[k], r.lo + k, r.basis->grid[k].data());
-  }
-  march_.finish(H_);
-  march_.set_affine(a, b);
-  march_.set_sense(EdgeMarch::Sense::Abs, false);
-  const double tau = march_.first_crossing(cq_.data(), cp_.data(), c.f_static[j], t_limit - s.t, s.t);
-  return {s.t + tau, march_.hit_limit};
 }
 
 }  // namespace sb::event_detail

@@ -71,7 +71,12 @@ class ModalRuns {
   // amplitude(i) at every t after the projection (finite for a run's end rows only): enough to
   // decide that a stuck neighbour is far from its threshold without evaluating the modes.
   double affine_u(int i, double t) const { return A_[i] + B_[i] * t; }
+  double affine_slope(int i) const { return B_[i]; }
   double amplitude(int i) const { return amp_[i]; }
+  // u of block i about time t as a polynomial in tau, c[j] = u^(j)(t) / j!, j = 0 .. deg (each
+  // mode's derivatives from its equation): the exact stepper's screen of a stuck block beside
+  // this run (span_screen.hpp).
+  void row_taylor(int i, double t, int deg, double* c);
   // Write every modal run's exact u, v at t. at_sample: t is a sample time, so the modal
   // coordinates may be advanced by the sample recurrence and kept as its new start. ends_only:
   // a grooves-only run writes only its two end rows (the ones a contact block's force reads),
@@ -85,6 +90,7 @@ class ModalRuns {
   struct Found {
     double t;
     bool limited;
+    double resume;  // where a limited search goes on: t_limit, or later if a bound says so
   };
   // Stop of sliding block i (fresh: its run was projected at s.t, so s.v[i] is exact).
   Found stop_time(const Chain& c, const State& s, int i, bool fresh, double t_limit);

@@ -3,18 +3,51 @@
 #include <cmath>
 #include <limits>
 
-#include "springblock/integrate/linear/run_stiffness.hpp"
-
 namespace sb::event_detail {
+namespace {
+
+// The modes of a run in closed form. Its stiffness is K_s I + K_int L, L the Laplacian of a path
+// of n blocks whose end rows lose their outer spring at a free chain end (run_stiffness.hpp).
+// With every block alike, L's eigenvectors are sampled sines and cosines (the discrete sine and
+// cosine transforms), j = 0 .. n-1 the row, k = 0 .. n-1 the mode, eigenvalue 2 - 2 cos theta:
+//   held at both ends (u_-1 = u_n = 0):     sin(theta (j + 1)),   theta = pi (k + 1) / (n + 1)
+//   free left, held right (u_-1 = u_0):     cos(theta (j + 1/2)), theta = pi (2k + 1) / (2n + 1)
+//   held left, free right:                  the same, mirrored (j -> n - 1 - j)
+//   free at both ends:                      cos(theta (j + 1/2)), theta = pi k / n
+// Each column is normalised by its computed norm, and the eigenvalues rise with k, as a
+// symmetric eigensolver would order them. O(n^2) per shape, against O(n^3) for the solver, which
+// the runs of many lengths of the exact stepper ask for once per repetition each.
+void closed_form_modes(double K_s, double K_int, int n, bool left, bool right, Eigen::MatrixXd& Q,
+                       Eigen::VectorXd& lambda) {
+  const double pi = 3.14159265358979323846;
+  Q.resize(n, n);
+  lambda.resize(n);
+  for (int k = 0; k < n; ++k) {
+    double theta;
+    if (left && right) theta = pi * (k + 1) / (n + 1);
+    else if (left || right) theta = pi * (2 * k + 1) / (2 * n + 1);
+    else theta = pi * k / n;
+    double norm2 = 0;
+    for (int j = 0; j < n; ++j) {
+      const int jj = (left && !right) ? n - 1 - j : j;  // the free end at row 0
+      const double x = (left && right) ? std::sin(theta * (jj + 1)) : std::cos(theta * (jj + 0.5));
+      Q(j, k) = x;
+      norm2 += x * x;
+    }
+    const double inv = 1.0 / std::sqrt(norm2);
+    for (int j = 0; j < n; ++j) Q(j, k) *= inv;
+    lambda[k] = K_s + K_int * (2.0 - 2.0 * std::cos(theta));
+  }
+}
+
+}  // namespace
 
 const RunBasis& RunBases::get(int n, bool left, bool right) {
   const auto key = std::make_tuple(n, left, right);
   auto it = bases_.find(key);
   if (it != bases_.end()) return it->second;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(run_stiffness(K_s_, K_int_, n, left, right));
   RunBasis b;
-  b.Q = es.eigenvectors();
-  b.lambda = es.eigenvalues();
+  closed_form_modes(K_s_, K_int_, n, left, right, b.Q, b.lambda);
   for (int k = 0; k < n; ++k) b.modes.push_back({0.5 * gamma_, b.lambda[k] / m_});
   for (int k = 0; k < n; ++k) b.first_row.push_back(b.Q(0, k)), b.last_row.push_back(b.Q(n - 1, k));
   if (sample_dt_ > 0) set_sample_transitions(b, sample_dt_);

@@ -5,9 +5,10 @@
 // K the run's stiffness matrix (run_stiffness.hpp). Around an affine particular solution
 // (affine_paths.hpp, or the modal one of modal_runs.hpp) the deviation splits into the
 // orthonormal eigenvectors of K, each a damped oscillator solved in closed form
-// (damped_mode.hpp). K depends only on (n, left held, right held), so the eigendecomposition is
-// made once per shape and shared by every run of that shape (RunBases): the quiet phase's groove
-// segments and the active set's modal runs are both built on it.
+// (damped_mode.hpp). K depends only on (n, left held, right held), and with every block alike its
+// eigenvectors are sampled sines and cosines (run_basis.cpp), so the modes are made once per shape
+// in closed form and shared by every run of that shape (RunBases): the quiet phase's groove
+// segments, the active set's modal runs and the exact stepper's runs are all built on it.
 #include <array>
 #include <map>
 #include <tuple>

@@ -47,12 +47,18 @@ class EventDriven final : public Integrator {
   // Ringing groove-only runs up to this many blocks are modal too (they have no stops to search).
   void set_modal_max_groove(int n) { modal_max_groove_ = n; }
   static constexpr int kDefaultModalMaxGroove = 32;
+  // The stepped runs move by their modes (exact) instead of Dormand-Prince steps while none is
+  // longer than max_run blocks (only with fast-forward on).
+  void set_exact_stepper(bool on, int max_run = kDefaultExactMaxRun) { exact_stepper_ = on, exact_max_run_ = max_run; }
+  static constexpr int kDefaultExactMaxRun = 64;
 
  private:
   double tol_;
   bool fast_forward_;
   int modal_max_run_ = kDefaultModalMaxRun;
   int modal_max_groove_ = kDefaultModalMaxGroove;
+  bool exact_stepper_ = true;
+  int exact_max_run_ = kDefaultExactMaxRun;
   std::vector<double>* switch_log_ = nullptr;
 };
 

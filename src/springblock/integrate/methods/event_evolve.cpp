@@ -17,10 +17,13 @@ void EventRun::run() {
       if (!quiet_phase()) return;  // the observer stopped the run inside it; its state is exact
     } else if (active_.stepped().empty()) {
       jump_exact();
+    } else if (exact_now()) {
+      evolve_exact();
     } else {
       evolve_stepped<Coupled, Damped>();
     }
   }
+  if (spans_valid_) write_spans(false);
   active_.materialise(s_.t, s_.u.data(), s_.v.data());
 }
 

@@ -27,6 +27,12 @@ EventRun::EventRun(const Chain& c, State& s, double t_end, double sample_dt, Obs
       fa_(c.N),
       fb_(c.N) {
   active_.set_sample_dt(sample_dt);
+  if (opt.exact_stepper) {
+    spans_ = std::make_unique<SpanModes>(c);
+    screen_ = std::make_unique<SpanScreen>(c);
+    spans_friction_only_ = obs.reads_only_friction();
+    spans_switched_.assign(c.N, 0);
+  }
   if (opt.fast_forward) {
     quiet_ = std::make_unique<QuietPhase>(c);
     quiet_->set_sample_dt(sample_dt);
@@ -39,8 +45,14 @@ void EventRun::reclassify(bool from_scratch) {
     active_.rebuild(c_, s_);
   else
     active_.update(c_, s_, sw_.touched(), sw_.touched_list());
+  if (spans_)
+    for (int i : sw_.touched_list())
+      if (!spans_switched_[i]) spans_switched_[i] = 1, spans_switched_list_.push_back(i);
   sw_.clear_touched();
   dp_.set_frozen(s_.u.data(), active_.stepped());
+  spans_valid_ = false;
+  mode_valid_ = false;
+  stage1_valid_ = false;
 }
 
 // Only the exact runs the switch reads or re-projects are brought to s.t first, unless the
@@ -69,6 +81,7 @@ void EventRun::sample_if_due() {
   if (!clock_.due(s_.t)) return;
   WorkTimer timer(s_.work, s_.work.sampling_s);
   ++s_.work.samples;
+  if (spans_valid_) write_spans(spans_friction_only_);
   active_.materialise(s_.t, s_.u.data(), s_.v.data(), true, ends_only_);
   obs_.sample(c_, s_);
   clock_.advance();

@@ -17,8 +17,10 @@
 #include "springblock/integrate/block_range.hpp"
 #include "springblock/integrate/events/active_set.hpp"
 #include "springblock/integrate/events/event_search.hpp"
+#include "springblock/integrate/events/span_screen.hpp"
 #include "springblock/integrate/events/switching.hpp"
 #include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/linear/span_modes.hpp"
 #include "springblock/integrate/methods/step_control.hpp"
 #include "springblock/integrate/step/dopri5.hpp"
 #include "springblock/model.hpp"
@@ -33,6 +35,8 @@ struct EventOptions {
   bool fast_forward;     // exact quiet phases, settled and modal runs (off: the tests' reference)
   int modal_max_run;     // see EventDriven::set_modal_max_run
   int modal_max_groove;  // see EventDriven::set_modal_max_groove
+  bool exact_stepper;    // the stepped runs move by their modes (span_modes.hpp), not Dormand-Prince
+  int exact_max_run;     // ... while no stepped run is longer than this (Dormand-Prince otherwise)
   std::vector<double>* switch_log;  // times of the instants with a switch (nullptr: none)
 };
 
@@ -55,6 +59,19 @@ class EventRun {
   // Evolve: one trial step of the stepped runs, to its end or to the first event inside it.
   template <bool Coupled, bool Damped>
   void evolve_stepped();
+  // Evolve, exact stepper: every stepped run advanced by its modes over one grid step (or to the
+  // next event, sample or end), its events found by the span screen (event_exact.cpp).
+  void evolve_exact();
+  // Whether the exact stepper moves the stepped runs (decided after each classification); on a
+  // change to Dormand-Prince the runs' blocks not yet written are written first.
+  bool exact_now();
+  // The exact stepper's runs projected afresh from the state at s.t, when a switch changed them.
+  void project_spans();
+  // Their blocks' u, v at s.t written into the state (all rows, or the end rows only).
+  void write_spans(bool ends_only);
+  void write_for_switch();
+  // After a step: grooves-only runs whose modes have rung down leave the stepped set.
+  void retire_spans();
   // The step layer: one Dormand-Prince trial of size h from s.t; returns its error (units of
   // the tolerance).
   template <bool Coupled, bool Damped>
@@ -91,6 +108,17 @@ class EventRun {
   Switching sw_;
   ActiveSet active_;
   std::unique_ptr<QuietPhase> quiet_;
+  // The exact stepper (opt.exact_stepper): the stepped runs' modes and their event screen, valid
+  // while the stepped set is the one they were projected for.
+  std::unique_ptr<SpanModes> spans_;
+  std::unique_ptr<SpanScreen> screen_;
+  bool spans_valid_ = false;
+  bool mode_valid_ = false;  // exact_mode_ is decided for the current classification
+  bool exact_mode_ = false;
+  bool spans_friction_only_ = false;  // the observer reads friction forces only: end rows suffice
+  double spans_settle_ = 0;           // earliest time a grooves-only run among them has rung down
+  std::vector<std::uint8_t> spans_switched_;  // per block: switched since the last projection
+  std::vector<int> spans_switched_list_;
   SampleSchedule clock_;
   State sample_;                  // buffer for samples served from the exact quiet-phase solution
   std::vector<double> fa_, fb_;   // affine contact forces a + b t once a quiet phase's modes died

@@ -1,0 +1,199 @@
+#include "springblock/integrate/events/span_screen.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "springblock/integrate/events/first_root.hpp"
+#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/round_off.hpp"
+
+namespace sb::event_detail {
+namespace {
+
+// Whether g > 0 on (0, h] follows from its values g0, g1 and slopes d0, d1 (per unit of tau) at
+// the ends of a step h and a bound M4 on |g''''|. g leaves its cubic Hermite interpolant H by at
+// most K s^2 (1 - s)^2, K = M4 h^4 / 24, s = tau / h. Either test suffices: the minimum of H on
+// [0, 1] above K / 16 (the largest allowance), or the quartic H - K s^2 (1 - s)^2 positive by its
+// Bernstein coefficients, which keeps the allowance's vanishing at the ends: a block that has
+// just started to slide starts at g = eps_v, and only the second test sees it rise.
+bool hermite_positive(double g0, double d0, double g1, double d1, double h, double M4) {
+  const double b = h * d0, c = 3.0 * (g1 - g0) - h * (2.0 * d0 + d1), d = 2.0 * (g0 - g1) + h * (d0 + d1);
+  const double K = M4 * h * h * h * h / 24.0;
+  const double a2 = c - K, a3 = d + 2.0 * K, a4 = -K;
+  if (g0 >= 0 && g0 + 0.25 * b > 0 && g0 + 0.5 * b + a2 / 6.0 > 0 && g0 + 0.75 * b + 0.5 * a2 + 0.25 * a3 > 0 &&
+      g0 + b + a2 + a3 + a4 > 0)
+    return true;
+  auto H = [&](double x) { return g0 + x * (b + x * (c + x * d)); };
+  double m = std::min(g0, g1);
+  auto at = [&](double x) {
+    if (x > 0.0 && x < 1.0) m = std::min(m, H(x));
+  };
+  if (d == 0.0) {
+    if (c != 0.0) at(-b / (2.0 * c));
+  } else {
+    const double disc = c * c - 3.0 * d * b;
+    if (disc >= 0.0) {
+      const double r = std::sqrt(disc);
+      at((-c - r) / (3.0 * d));
+      at((-c + r) / (3.0 * d));
+    }
+  }
+  return m - K / 16.0 > 0;
+}
+
+double horner(const double* c, int d, double x) {
+  double p = c[d];
+  for (int j = d - 1; j >= 0; --j) p = p * x + c[j];
+  return p;
+}
+
+}  // namespace
+
+SpanScreen::SpanScreen(const Chain& c)
+    : K_int_(c.K_int), K_s_(c.K_s), v_(c.v_slider), eps_v_(kStopMargin * c.v_slider) {}
+
+void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active) {
+  fns_.clear();
+  const int N = c.N;
+  auto side_of = [&](int j) {
+    if (j < 0 || j >= N) return kNone;
+    if (spans.holds(j)) return kSpan;
+    if (active.kind(j) == ActiveSet::kSettled) return kSettled;
+    return active.kind(j) == ActiveSet::kModal ? kModal : kFixed;
+  };
+  // A stuck block between two stepped runs borders both: it is listed once (the runs come in
+  // block order, so it is the last one listed).
+  auto add_stuck = [&](int j) {
+    if (j < 0 || j >= N || (!fns_.empty() && fns_.back().block == j)) return;
+    Fn f{j, 0, {side_of(j - 1), side_of(j + 1)}, 0, 0, 0, 0, false, false, 0, 0, 0};
+    for (int side = 0; side < 2; ++side) {
+      const int nb = side == 0 ? j - 1 : j + 1;
+      if (f.side[side] == kSpan) f.M2 += K_int_ * spans.row_bound(nb, 2), f.M4 += K_int_ * spans.row_bound(nb, 4);
+      if (f.side[side] == kModal) f.spread += K_int_ * active.modal_amplitude(nb);
+    }
+    f.g0 = cheap(c, s, spans, active, f, s.t, false);
+    fns_.push_back(f);
+  };
+  for (const BlockRange& r : spans.spans()) {
+    add_stuck(r.lo - 1);
+    for (int i = r.lo; i < r.hi; ++i) {
+      if (s.dir[i] == 0) continue;
+      Fn f{i, s.dir[i], {kNone, kNone}, 0, 0, 0, 0, false, false, spans.row_bound(i, 3), spans.row_bound(i, 5), 0};
+      f.g0 = cheap(c, s, spans, active, f, s.t, false);
+      fns_.push_back(f);
+    }
+    add_stuck(r.hi);
+  }
+  root_.resize(fns_.size());
+}
+
+double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active,
+                         const Fn& f, double t, bool end, bool slope) const {
+  const int j = f.block;
+  if (f.dir != 0) return f.dir * (slope ? spans.a(j, end) : spans.v(j, end) + eps_v_ * f.dir);
+  // The driving force as the Dormand-Prince search sums it (event_search.cpp), and its slope.
+  const double uj = s.u[j];
+  double F = K_s_ * (v_ * t - uj), dF = K_s_ * v_;
+  for (int side = 0; side < 2; ++side) {
+    const int nb = side == 0 ? j - 1 : j + 1;
+    switch (f.side[side]) {
+      case kNone: continue;
+      case kSpan:
+        F += K_int_ * (spans.u(nb, end) - uj);
+        if (slope) dF += K_int_ * spans.v(nb, end);
+        break;
+      case kSettled:
+        F += K_int_ * (active.settled_u(nb, t) - uj);
+        dF += K_int_ * active.settled_drift(nb);
+        break;
+      case kModal:
+        F += K_int_ * (active.modal_affine_u(nb, t) - uj);
+        dF += K_int_ * active.modal_affine_slope(nb);
+        break;
+      case kFixed: F += K_int_ * (s.u[nb] - uj); break;
+    }
+  }
+  if (slope) return F >= 0 ? -dF : dF;
+  return c.f_static[j] - std::fabs(F) - f.spread;
+}
+
+double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, double h,
+                          double window) {
+  double best = kInf;
+  const double chord = 0.125 * h * h;
+  for (std::size_t k = 0; k < fns_.size(); ++k) {
+    Fn& f = fns_[k];
+    f.g1 = cheap(c, s, spans, active, f, s.t + h, true);
+    f.d1_known = false;
+    root_[k] = kInf;
+    if (f.g1 > 0 && std::min(f.g0, f.g1) - f.M2 * chord > 0) continue;
+    if (f.g1 > 0) {
+      if (!f.d0_known) f.d0 = cheap(c, s, spans, active, f, s.t, false, true), f.d0_known = true;
+      f.d1 = cheap(c, s, spans, active, f, s.t + h, true, true), f.d1_known = true;
+      if (hermite_positive(f.g0, f.d0, f.g1, f.d1, h, f.M4)) continue;
+    }
+    ++polynomial_searches;
+    root_[k] = exact_root(c, s, spans, active, f, h);
+    best = std::min(best, root_[k]);
+  }
+  hits_.clear();
+  if (best <= h)
+    for (std::size_t k = 0; k < fns_.size(); ++k)
+      if (root_[k] <= best + window * h) hits_.push_back(fns_[k].block);
+  return best;
+}
+
+void SpanScreen::accept() {
+  for (Fn& f : fns_) f.g0 = f.g1, f.d0 = f.d1, f.d0_known = f.d1_known;
+}
+
+// g over the step as a polynomial in tau = t - s.t: the rows' Taylor polynomials combined as the
+// cheap form combines their values.
+double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, const Fn& f,
+                              double h) {
+  double row[D + 2], g[D + 1];
+  const int j = f.block;
+  const double t0 = s.t;
+  if (f.dir != 0) {
+    spans.row_taylor(j, row);
+    for (int k = 0; k <= D; ++k) g[k] = f.dir * ((k + 1) * row[k + 1]);
+    g[0] += eps_v_;
+    return poly_root(g, t0, h);
+  }
+  double F[D + 1] = {};
+  const double uj = s.u[j];
+  F[0] = K_s_ * (v_ * t0 - uj);
+  F[1] = K_s_ * v_;
+  for (int side = 0; side < 2; ++side) {
+    const int nb = side == 0 ? j - 1 : j + 1;
+    switch (f.side[side]) {
+      case kNone: continue;
+      case kFixed: F[0] += K_int_ * (s.u[nb] - uj); continue;
+      case kSettled:
+        F[0] += K_int_ * (active.settled_u(nb, t0) - uj);
+        F[1] += K_int_ * active.settled_drift(nb);
+        continue;
+      case kSpan: spans.row_taylor(nb, row); break;
+      case kModal: active.modal_taylor(nb, t0, D, row); break;
+    }
+    F[0] += K_int_ * (row[0] - uj);
+    for (int k = 1; k <= D; ++k) F[k] += K_int_ * row[k];
+  }
+  const double fs = c.f_static[j];
+  double root = kInf;
+  for (double sense : {1.0, -1.0}) {
+    for (int k = 0; k <= D; ++k) g[k] = -sense * F[k];
+    g[0] += fs;
+    root = std::min(root, poly_root(g, t0, h));
+  }
+  return root;
+}
+
+double SpanScreen::poly_root(const double* g, double t0, double h) const {
+  double lo, hi;
+  if (!bern_.first_bracket(g, h, lo, hi)) return kInf;
+  auto p = [&](double x) { return horner(g, D, x); };
+  return first_root(p, lo, p(lo), hi, p(hi), [&](double x) { return time_round_off(t0 + x); });
+}
+
+}  // namespace sb::event_detail

@@ -1,0 +1,79 @@
+#pragma once
+// Locates stick/slip events inside a step of the exact stepper (linear/span_modes.hpp).
+//
+// Event functions, positive while nothing happens:
+//   sliding block in a stepped run:   g = dir v + eps_v  (it stops when dir v falls below -eps_v,
+//                                     the round-off margin of the modal runs, modal_runs.hpp)
+//   stuck block beside a stepped run: g = f_static - |F|  (F its driving force)
+// Each is screened over a step [0, h] in three stages, cheapest first:
+//   * two tests that provably pass no root, from g at both ends of the step and bounds on its
+//     derivatives from the rows' (SpanModes::row_bound): the chord, g >= min(g_0, g_h) - M2 h^2 / 8
+//     with M2 >= |g''|; where that fails, the cubic Hermite interpolant of g and g' at the ends,
+//     which g leaves by at most M4 h^4 / 384 (M4 >= |g''''|), so its minimum on the step less
+//     that is a lower bound (far tighter: a step turns the fastest mode by half a radian). A
+//     stuck block beside a modal run takes that run's row as its affine path widened by its
+//     modal bound (ModalRuns::amplitude), which holds at every time;
+//   * where that test fails, g as the Taylor polynomial of its rows about the step's start
+//     (exact to round-off over a step, SpanModes::row_taylor), whose first root in [0, h] is
+//     isolated in the Bernstein basis (bernstein.hpp) and refined to round-off in t
+//     (first_root.hpp). A stuck block's |F| is searched as F reaching +f_static and -f_static.
+// The earliest root, and every block whose root lies within `window` (a fraction of the step)
+// of it, make the step's event, as for the Dormand-Prince search (event_search.hpp).
+#include <cstdint>
+#include <vector>
+
+#include "springblock/integrate/events/active_set.hpp"
+#include "springblock/integrate/events/bernstein.hpp"
+#include "springblock/integrate/linear/span_modes.hpp"
+#include "springblock/model.hpp"
+#include "springblock/state.hpp"
+
+namespace sb::event_detail {
+
+class SpanScreen {
+ public:
+  explicit SpanScreen(const Chain& c);
+
+  // The event functions of the runs in `spans` and their values at its current time (after
+  // every projection).
+  void rebuild(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active);
+  // After spans.advance(h) from s.t: the earliest event in (0, h] as a time after s.t, or a value
+  // > h if none; hits() then lists its blocks.
+  double locate(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, double h,
+                double window = 1e-12);
+  // The step was taken: each function's value at its end is its value at the next start.
+  void accept();
+  const std::vector<int>& hits() const { return hits_; }
+
+  // Diagnostics: steps whose cheap test failed for some function, and polynomial searches.
+  long polynomial_searches = 0;
+
+ private:
+  static constexpr int D = SpanModes::kDegree;
+  enum Side : std::uint8_t { kNone, kSpan, kSettled, kModal, kFixed };
+  struct Fn {
+    int block;
+    std::int8_t dir;  // a sliding block's direction; 0 for a stuck block's threshold
+    Side side[2];     // a stuck block's neighbours (left, right)
+    double g0, g1;    // g (or its cheap lower bound) at the step's start and end
+    double d0, d1;    // their slopes, where known (d0_known, d1_known)
+    bool d0_known, d1_known;
+    double M2, M4;    // bounds on |g''| and |g''''| (of the part that is not a modal bound)
+    double spread;    // K_int times a modal neighbour's bound (0 without one)
+  };
+  // g's cheap form at the step's start (end = false) or end, and its slope (slope = true).
+  double cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active, const Fn& f,
+               double t, bool end, bool slope = false) const;
+  // The first root of f in [0, h] from its polynomial (+inf if none).
+  double exact_root(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, const Fn& f,
+                    double h);
+  double poly_root(const double* g, double t0, double h) const;
+
+  double K_int_, K_s_, v_, eps_v_;
+  std::vector<Fn> fns_;
+  std::vector<double> root_;
+  std::vector<int> hits_;
+  BernsteinRoots<D> bern_;
+};
+
+}  // namespace sb::event_detail
