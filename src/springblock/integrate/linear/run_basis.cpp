@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <tuple>
 
 namespace sb::event_detail {
 namespace {
@@ -40,6 +42,27 @@ void closed_form_modes(double K_s, double K_int, int n, bool left, bool right, E
   }
 }
 
+// The same, kept per thread: every repetition of a scene asks for the same shapes (their cosines
+// are most of a projection's cost on the first call), and the closed form is the same doubles
+// whoever computes it, so results do not depend on the thread count.
+void cached_modes(double K_s, double K_int, int n, bool left, bool right, Eigen::MatrixXd& Q,
+                  Eigen::VectorXd& lambda) {
+  struct Modes {
+    Eigen::MatrixXd Q;
+    Eigen::VectorXd lambda;
+  };
+  thread_local std::map<std::tuple<double, double, int, bool, bool>, Modes> cache;
+  const auto key = std::make_tuple(K_s, K_int, n, left, right);
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    Modes m;
+    closed_form_modes(K_s, K_int, n, left, right, m.Q, m.lambda);
+    it = cache.emplace(key, std::move(m)).first;
+  }
+  Q = it->second.Q;
+  lambda = it->second.lambda;
+}
+
 }  // namespace
 
 const RunBasis& RunBases::get(int n, bool left, bool right) {
@@ -47,7 +70,7 @@ const RunBasis& RunBases::get(int n, bool left, bool right) {
   auto it = bases_.find(key);
   if (it != bases_.end()) return it->second;
   RunBasis b;
-  closed_form_modes(K_s_, K_int_, n, left, right, b.Q, b.lambda);
+  cached_modes(K_s_, K_int_, n, left, right, b.Q, b.lambda);
   for (int k = 0; k < n; ++k) b.modes.push_back({0.5 * gamma_, b.lambda[k] / m_});
   for (int k = 0; k < n; ++k) b.first_row.push_back(b.Q(0, k)), b.last_row.push_back(b.Q(n - 1, k));
   if (sample_dt_ > 0) set_sample_transitions(b, sample_dt_);

@@ -59,9 +59,10 @@ SpanModes::SpanModes(const Chain& c)
 }
 
 const SpanModes::Shape& SpanModes::shape(int n, bool left, bool right) {
-  const auto key = std::make_tuple(n, left, right);
-  auto it = shapes_.find(key);
-  if (it != shapes_.end()) return it->second;
+  // A flat index by (n, left, right): every projection looks its shape up.
+  const std::size_t slot = 4 * static_cast<std::size_t>(n) + 2 * left + right;
+  if (slot >= index_.size()) index_.resize(slot + 1, nullptr);
+  if (index_[slot] != nullptr) return *index_[slot];
   Shape sh;
   sh.basis = &bases_.get(n, left, right);
   sh.path = &paths_.get(n, left, right);
@@ -86,7 +87,8 @@ const SpanModes::Shape& SpanModes::shape(int n, bool left, bool right) {
     sh.inv_pivot.push_back(1.0 / pivot);
     sh.upper.push_back(-K_int_ / pivot);
   }
-  return shapes_.emplace(key, std::move(sh)).first->second;
+  index_[slot] = &shapes_.emplace(std::make_tuple(n, left, right), std::move(sh)).first->second;
+  return *index_[slot];
 }
 
 void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockRange>& spans,

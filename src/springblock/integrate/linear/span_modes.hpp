@@ -123,6 +123,7 @@ class SpanModes {
   RunBases bases_;
   AffineShapes paths_;
   std::map<std::tuple<int, bool, bool>, Shape> shapes_;
+  std::vector<const Shape*> index_;  // shapes_ by 4 n + 2 left + right
   std::vector<Span> spans_, kept_;
   std::vector<BlockRange> ranges_;
   std::vector<int> span_of_;              // block -> index in spans_ (-1: none)
