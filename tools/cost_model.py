@@ -27,7 +27,7 @@ Choices fixed before any fit was looked at:
     the relative error: each repetition's row is divided by its measured time, since the test is a
     ratio (a factor of 2) and an absolute fit would be decided by the longest runs.
   * Form. The headline form above, unless it misses more scenes than the extended form (headline
-    plus c_block * block_steps, the blocks integrated summed over Dormand-Prince trial steps) when
+    plus c_block * block_steps, the blocks moved summed over the steps of the moving runs) when
     each calibration scene is predicted from a fit on the others (leave one scene out). block_steps
     and not the stretch samples, because the stepping work per episode grows with the size and
     length of the moving runs, which differ between surfaces far more than a stretch's cost does.
@@ -35,11 +35,12 @@ Choices fixed before any fit was looked at:
   * Verdict. Per validation scene the median measured time over its repetitions against the median
     prediction; within a factor of 2 means 1/2 <= measured/predicted <= 2. Met when at least
     NEEDED_WITHIN validation scenes are within.
-  * Floor. The time in stepping_s: the Dormand-Prince trial steps that integrate the slips, which
-    no method can skip (between slips the chain moves in closed form). Event location, switching,
-    quiet phases and sampling are ours to make cheaper, so wall/floor is what they and the driver
-    add. It is a floor of this integrator's stepping, not a bound over all integrators. Floor
-    ratio and the breakdown of the five timed kinds are sums over a scene's repetitions.
+  * Floor. The time in stepping_s: the steps that move the sliding runs (the exact stepper's
+    projections and mode transitions, or Dormand-Prince trials for runs longer than exact_max_run),
+    which no method can skip (between slips the chain moves in closed form). Event location,
+    switching, quiet phases and sampling are ours to make cheaper, so wall/floor is what they and
+    the driver add. It is a floor of this integrator's stepping, not a bound over all integrators.
+    Floor ratio and the breakdown of the five timed kinds are sums over a scene's repetitions.
   * Repetitions are run interleaved (round r runs repetition r of every scene, one process each,
     seed SEED + r): the machine is shared, and a slow period then falls on every scene alike.
 
@@ -259,7 +260,8 @@ def fit_table(doc):
 
 
 def floor_table(doc):
-    out = ["", "The floor is the Dormand-Prince stepping that integrates the slips (`stepping_s`); where the "
+    out = ["", "The floor is the stepping that moves the slips (`stepping_s`: the exact stepper's projections "
+               "and mode transitions, or Dormand-Prince steps of runs longer than exact_max_run); where the "
                "rest of each repetition goes, in per cent of its wall time (sums over the repetitions):", "",
            "| scene | measured | floor | measured/floor | stepping | event location | switching | quiet | "
            "sampling | other |", "|---|---|---|---|---|---|---|---|---|---|"]
