@@ -52,7 +52,7 @@ void EventRun::write_spans(bool ends_only) { spans_->write(s_.u.data(), s_.v.dat
 // Before a switch of the flagged blocks: what it reads of the runs (SpanModes::write_near), or
 // everything when it may stop every sliding block (a quiet phase starts from the whole state).
 void EventRun::write_for_switch() {
-  if (static_cast<std::size_t>(sw_.n_sliding()) <= sw_.flagged().size()) write_spans(false);
+  if (may_go_quiet()) write_spans(false);
   else spans_->write_near(sw_.flagged(), s_.u.data(), s_.v.data());
 }
 

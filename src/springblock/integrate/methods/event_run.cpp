@@ -56,13 +56,19 @@ void EventRun::reclassify(bool from_scratch) {
 }
 
 // Only the exact runs the switch reads or re-projects are brought to s.t first, unless the
-// switch may stop every sliding block (only flagged blocks switch): a quiet phase begins from
-// the whole state. (Not after settling: that would overwrite the v = 0 of the blocks that just
-// stopped.)
+// switch may stop every sliding block (every sliding block is flagged: only flagged blocks
+// switch, and one that starts stops none): a quiet phase begins from the whole state. (Not after
+// settling: that would overwrite the v = 0 of the blocks that just stopped.)
+bool EventRun::may_go_quiet() const {
+  int stopping = 0;
+  for (int i : sw_.flagged()) stopping += s_.dir[i] != 0;
+  return stopping >= sw_.n_sliding();
+}
+
 void EventRun::switch_now() {
   WorkTimer timer(s_.work, s_.work.switching_s);
   ++s_.work.switch_instants;
-  if (static_cast<std::size_t>(sw_.n_sliding()) <= sw_.flagged().size())
+  if (may_go_quiet())
     active_.materialise(s_.t, s_.u.data(), s_.v.data());
   else
     active_.materialise_near(s_.t, s_.u.data(), s_.v.data(), sw_.flagged());

@@ -84,6 +84,8 @@ class EventRun {
   void reclassify(bool from_scratch = false);
   // Apply the switching rules to the blocks flagged at s.t (see event_run.cpp).
   void switch_now();
+  // Every sliding block is flagged: the switch may leave nothing sliding.
+  bool may_go_quiet() const;
   // The stepped blocks take the end of the last attempted step.
   void take_step_end(const std::vector<BlockRange>& spans);
   void sample_if_due();
