@@ -79,7 +79,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), slider_slope_(c.K_s * 
 
 // A, B of segment s from the stuck neighbours' positions in u, and the modal coordinates of the
 // deviation from them at t0.
-void QuietPhase::project(const GrooveRun& s, const double* u, const double* v) {
+void QuietPhase::project(const GrooveRun& s, const double* u, const double* v, bool on_path) {
   const double t0 = t0_;
   const RunBasis& d = *s.basis;
   double* A = A_.data() + s.offset;
@@ -92,6 +92,11 @@ void QuietPhase::project(const GrooveRun& s, const double* u, const double* v) {
   for (int r = 0; r < s.n; ++r) {
     B[r] = path.B[r];
     A[r] = path.a0[r] + uL * path.gL[r] + uR * path.gR[r];
+  }
+  if (on_path) {
+    std::fill(q0, q0 + s.n, 0.0);
+    std::fill(p0, p0 + s.n, 0.0);
+    return;
   }
   for (int k = 0; k < s.n; ++k) {
     double qk = 0, pk = 0;
@@ -121,11 +126,12 @@ void QuietPhase::set_dead_times(GrooveRun& s) const {
   s.sample_dead_tau = std::min(s.dead_tau, env.time_below(sample_eps_u_, sample_eps_v_));
 }
 
-void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
+void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v,
+                       const std::function<bool(int)>& on_path) {
   t0_ = t0;
   sample_valid_ = false;
   for (GrooveRun& s : segs_) {
-    project(s, u, v);
+    project(s, u, v, on_path && on_path(s.first));
     set_dead_times(s);
   }
   for (std::size_t k = 0; k < affine_blocks_.size(); ++k)
@@ -178,9 +184,18 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
     if (tau < best) best = tau, block = j;
   }
   // Search the edges likeliest to cross first first: each search stops at the best time so far.
+  // An edge whose segments have no modes (settled grooves) has an affine force: closed form.
   for (std::size_t k = 0; k < edges_.size(); ++k) {
     Edge& e = edges_[k];
-    e.lower = e.march.lower_bound(q0_.data(), p0_.data(), c.f_static[e.block]);
+    bool modes = false;
+    for (int n = 0; n < e.nseg; ++n) modes = modes || segs_[e.seg[n]].dead_tau > 0;
+    if (!modes) {
+      e.lower = kInf;  // never searched below
+      const double tau = affine_crossing(e.fa, e.fb, c.f_static[e.block]);
+      if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;
+    } else {
+      e.lower = e.march.lower_bound(q0_.data(), p0_.data(), c.f_static[e.block]);
+    }
     order_[k] = static_cast<int>(k);
   }
   std::sort(order_.begin(), order_.end(), [&](int x, int y) { return edges_[x].lower < edges_[y].lower; });

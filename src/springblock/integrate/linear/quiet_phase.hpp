@@ -22,6 +22,7 @@
 // Samples inside a quiet phase are served by sample(): the modal coordinates are advanced from
 // the previous sample by each mode's exact transition matrix over the sample spacing (no
 // transcendental calls), and segments whose modes have died out cost only their affine part.
+#include <functional>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -42,8 +43,11 @@ class QuietPhase {
   explicit QuietPhase(const Chain& c);
 
   // Start a quiet phase at time t0 from positions u and velocities v (every contact block
-  // stuck, so its v is 0).
-  void begin(const Chain& c, double t0, const double* u, const double* v);
+  // stuck, so its v is 0). on_path(first block of a segment), if given, says the segment is on
+  // its affine path (a settled groove run, written as such into u and v): its modes are taken as
+  // zero instead of projected from the round-off of u - (A + B t0).
+  void begin(const Chain& c, double t0, const double* u, const double* v,
+             const std::function<bool(int)>& on_path = {});
 
   // Exact u, v of every groove block at time t >= t0 (other entries untouched).
   void evaluate(double t, double* u, double* v) const;
@@ -125,7 +129,7 @@ class QuietPhase {
 
   // begin()'s work per segment: the particular solution and the modal coordinates of the
   // deviation from it; the times after which the modes no longer count.
-  void project(const GrooveRun& s, const double* u, const double* v);
+  void project(const GrooveRun& s, const double* u, const double* v, bool on_path);
   void set_dead_times(GrooveRun& s) const;
   // u, v of segment s at absolute time t from its modal coordinates q, qd.
   void to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,

@@ -32,7 +32,9 @@ bool EventRun::quiet_phase() {
   QuietPhase::Next next;
   {
     WorkTimer timer(s_.work, s_.work.quiet_s);
-    quiet_->begin(c_, s_.t, s_.u.data(), s_.v.data());
+    // Settled grooves are on their affine path: their modes are zero (active_set.hpp).
+    quiet_->begin(c_, s_.t, s_.u.data(), s_.v.data(),
+                  [&](int i) { return active_.kind(i) == ActiveSet::kSettled; });
     next = quiet_->next_threshold(c_, t_end_);
   }
   if (!serve_quiet_samples(next.t)) return false;
