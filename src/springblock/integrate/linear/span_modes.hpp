@@ -68,8 +68,8 @@ class SpanModes {
   // Row evaluations of block i, which must be in a run: at the current state (end = false) or
   // at the step's end (end = true, time now() + h of the last advance).
   bool holds(int i) const { return span_of_[i] >= 0; }
-  double u(int i, bool end) const;
-  double v(int i, bool end) const;
+  double u(int i, bool end) const { return A_[i] + B_[i] * (end ? t_ + h_ : t_) + row_dot(i, end ? qn_.data() : q_.data()) + du_[i]; }
+  double v(int i, bool end) const { return B_[i] + row_dot(i, end ? pn_.data() : p_.data()) + dv_[i]; }
   double a(int i, bool end) const;  // the acceleration
   // A bound on the order-th derivative of u of block i (order 2 to 5) from the projection on, for
   // the end rows of a run and its sliding blocks.

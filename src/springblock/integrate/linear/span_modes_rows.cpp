@@ -9,13 +9,6 @@
 
 namespace sb::event_detail {
 
-double SpanModes::u(int i, bool end) const {
-  const double t = end ? t_ + h_ : t_;
-  return A_[i] + B_[i] * t + row_dot(i, end ? qn_.data() : q_.data()) + du_[i];
-}
-
-double SpanModes::v(int i, bool end) const { return B_[i] + row_dot(i, end ? pn_.data() : p_.data()) + dv_[i]; }
-
 double SpanModes::a(int i, bool end) const {
   const Span& sp = spans_[span_of_[i]];
   const int n = sp.hi - sp.lo;
