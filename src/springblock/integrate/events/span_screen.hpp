@@ -10,7 +10,7 @@
 //     derivatives from the rows' (SpanModes::row_bound): the chord, g >= min(g_0, g_h) - M2 h^2 / 8
 //     with M2 >= |g''|; where that fails, the cubic Hermite interpolant of g and g' at the ends,
 //     which g leaves by at most M4 h^4 / 384 (M4 >= |g''''|), so its minimum on the step less
-//     that is a lower bound (far tighter: a step turns the fastest mode by half a radian). A
+//     that is a lower bound (far tighter: a step turns the fastest mode by 0.75 rad). A
 //     stuck block beside a modal run takes that run's row as its affine path widened by its
 //     modal bound (ModalRuns::amplitude), which holds at every time;
 //   * where that test fails, g as the Taylor polynomial of its rows about the step's start

@@ -9,10 +9,13 @@
 namespace sb::event_detail {
 namespace {
 
-// The longest step in radians of the fastest rate: a step turns every mode by at most half a
-// radian, so the screen's curvature allowance M2 H^2 / 8 is ~1/32 of a row's amplitude and the
-// Taylor remainder of degree kDegree + 1 over a step is below 0.5^18 / 18! ~ 6e-22 of it.
-constexpr double kStepRadians = 0.5;
+// The longest step in radians of the fastest rate: a step turns every mode by at most 0.75 rad,
+// so the screen's Hermite allowance M4 H^4 / 384 is ~1/1200 of a row's amplitude and the Taylor
+// remainder over a step (degree kDegree + 1 of u, so kDegree of its velocity) below
+// 0.75^14 / 14! ~ 2e-13 of it. Chosen by measurement (paper/choices.md, Integration): 0.5 rad with
+// degree 10 and 1 rad with degree 14 cost a few per cent more per switch, 0.35 rad with degree 8
+// some 5 % more.
+constexpr double kStepRadians = 0.75;
 // Grid steps between restarts of the recurrence from the closed form (its round-off grows by a
 // few ulp of the modes per step).
 constexpr int kSpanResync = 256;

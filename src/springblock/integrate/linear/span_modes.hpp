@@ -7,7 +7,7 @@
 // (the pieces of affine_paths.hpp, less its sliding blocks' kinetic friction) plus its normal
 // modes, each a damped oscillator in closed form (damped_mode.hpp). Nothing is approximated, so
 // there is no error control and no step is ever rejected: the runs advance together by steps of
-// at most H, a fixed fraction of a radian of the fastest rate any run of the chain can have. H
+// at most H, 0.75 rad of the fastest rate any run of the chain can have. H
 // only sets how often the event screen (events/span_screen.hpp) looks: a full step moves each
 // mode by its exact transition over H, computed once per run shape; a shorter one (cut to a
 // sample, a closed-form event or the end of the run) and the move to an event inside a step use
@@ -34,10 +34,10 @@ namespace sb::event_detail {
 class SpanModes {
  public:
   // Degree of the Taylor polynomials the screen builds over one step (see row_taylor).
-  static constexpr int kDegree = 10;
+  static constexpr int kDegree = 12;
 
   explicit SpanModes(const Chain& c);
-  // The longest step, H = 0.5 / (the fastest rate of any mode of any run of the chain).
+  // The longest step, H = 0.75 / (the fastest rate of any mode of any run of the chain).
   double H() const { return H_; }
 
   // After a classification at s.t: the runs in `spans`. A run the previous projection had too is
@@ -75,7 +75,7 @@ class SpanModes {
   // the end rows of a run and its sliding blocks.
   double row_bound(int i, int order) const;
   // u of block i about now() as a polynomial in tau: c[j], j = 0 .. kDegree + 1 (exact to
-  // round-off for tau <= H: the remainder is below 0.5^(kDegree+2) / (kDegree+2)! of the
+  // round-off for tau <= H: the remainder is below 0.75^(kDegree+2) / (kDegree+2)! of the
   // modes' amplitude).
   void row_taylor(int i, double* c) const;
 
