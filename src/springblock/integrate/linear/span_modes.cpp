@@ -54,7 +54,9 @@ SpanModes::SpanModes(const Chain& c)
       q0_(c.N),
       p0_(c.N),
       sE_(c.N),
-      rhs_(c.N) {
+      rhs_(c.N),
+      scratch_u_(c.N),
+      scratch_v_(c.N) {
   // Every run's modes are below sqrt((K_s + 4 K_int) / m); an overdamped mode decays no faster
   // than gamma. H is set by the faster of the two, so the Taylor bound above holds for all.
   const double omega_max = std::sqrt((c.K_s + 4.0 * c.K_int) / c.m);

@@ -133,6 +133,7 @@ class SpanModes {
   std::vector<double> q_, p_, qn_, pn_;   // per mode slot (run lo + k): current and step end
   std::vector<double> q0_, p0_, sE_;      // at the projection: modes, sqrt of their energies
   std::vector<double> rhs_;
+  mutable std::vector<double> scratch_u_, scratch_v_;  // write_rows: a run's Q q and Q p
 };
 
 }  // namespace sb::event_detail

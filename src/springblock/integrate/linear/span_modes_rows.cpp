@@ -6,8 +6,26 @@
 
 #include "springblock/integrate/linear/envelope.hpp"
 #include "springblock/integrate/linear/span_modes.hpp"
+#include "springblock/kernel_clones.hpp"
 
 namespace sb::event_detail {
+namespace {
+
+// su = Q q and sv = Q p for the n x n column-major Q, accumulated mode by mode.
+SB_KERNEL_CLONES void columns_times(int n, const double* __restrict Q, const double* __restrict q,
+                                    const double* __restrict p, double* __restrict su, double* __restrict sv) {
+  for (int r = 0; r < n; ++r) su[r] = 0.0, sv[r] = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double* col = Q + static_cast<std::size_t>(k) * n;
+    const double qk = q[k], pk = p[k];
+    for (int r = 0; r < n; ++r) {
+      su[r] += col[r] * qk;
+      sv[r] += col[r] * pk;
+    }
+  }
+}
+
+}  // namespace
 
 double SpanModes::a(int i, bool end) const {
   const Span& sp = spans_[span_of_[i]];
@@ -49,19 +67,29 @@ void SpanModes::row_taylor(int i, double* c) const {
 
 void SpanModes::write(double* u, double* v, bool ends_only) const {
   for (const Span& sp : spans_) {
-    const int n = sp.hi - sp.lo, step = ends_only && n > 2 ? n - 1 : 1;
-    for (int row = 0; row < n; row += step) {
-      const int i = sp.lo + row;
+    const int n = sp.hi - sp.lo;
+    if (!ends_only || n <= 2) {
+      write_rows(sp, u, v);
+      continue;
+    }
+    for (int i : {sp.lo, sp.hi - 1}) {
       u[i] = A_[i] + B_[i] * t_ + row_dot(i, q_.data()) + du_[i];
       v[i] = B_[i] + row_dot(i, p_.data()) + dv_[i];
     }
   }
 }
 
+// Every row of a run: Q q and Q p a column at a time (Q is stored by column), so the loop over
+// rows vectorises while each row still sums its modes in row_dot's order: the same doubles.
 void SpanModes::write_rows(const Span& sp, double* u, double* v) const {
-  for (int i = sp.lo; i < sp.hi; ++i) {
-    u[i] = A_[i] + B_[i] * t_ + row_dot(i, q_.data()) + du_[i];
-    v[i] = B_[i] + row_dot(i, p_.data()) + dv_[i];
+  const int n = sp.hi - sp.lo;
+  double* su = scratch_u_.data();
+  double* sv = scratch_v_.data();
+  columns_times(n, sp.shape->basis->Q.data(), q_.data() + sp.lo, p_.data() + sp.lo, su, sv);
+  for (int r = 0; r < n; ++r) {
+    const int i = sp.lo + r;
+    u[i] = A_[i] + B_[i] * t_ + su[r] + du_[i];
+    v[i] = B_[i] + sv[r] + dv_[i];
   }
 }
 
