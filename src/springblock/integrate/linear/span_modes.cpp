@@ -31,6 +31,20 @@ SB_KERNEL_CLONES void grid_transition(int n, const double* __restrict p00, const
   }
 }
 
+// q = Q^T x and p = Q^T y for the n x n Q given by rows (Qr), accumulated row by row.
+SB_KERNEL_CLONES void rows_times(int n, const double* __restrict Qr, const double* __restrict x,
+                                 const double* __restrict y, double* __restrict q, double* __restrict p) {
+  for (int k = 0; k < n; ++k) q[k] = 0.0, p[k] = 0.0;
+  for (int r = 0; r < n; ++r) {
+    const double* row = Qr + static_cast<std::size_t>(r) * n;
+    const double xr = x[r], yr = y[r];
+    for (int k = 0; k < n; ++k) {
+      q[k] += row[k] * xr;
+      p[k] += row[k] * yr;
+    }
+  }
+}
+
 }  // namespace
 
 SpanModes::SpanModes(const Chain& c)
@@ -145,18 +159,19 @@ void SpanModes::project_one(const Chain& c, const State& s, Span& sp) {
     for (int row = n - 2; row >= 0; --row) y[row] -= sh.upper[row] * y[row + 1];
     for (int row = 0; row < n; ++row) A_[lo + row] -= y[row];
   }
-  // The deviation from the path at s.t, then its modal coordinates (Q^T x, column by column).
+  // The deviation from the path at s.t, then its modal coordinates Q^T x (rows of Q in turn, so
+  // the loop over modes vectorises; each mode still sums its rows in order).
   double* x = rhs_.data() + lo;
-  for (int row = 0; row < n; ++row) x[row] = s.u[lo + row] - A_[lo + row] - B_[lo + row] * s.t;
+  double* y = scratch_u_.data();
+  for (int row = 0; row < n; ++row) {
+    x[row] = s.u[lo + row] - A_[lo + row] - B_[lo + row] * s.t;
+    y[row] = s.v[lo + row] - B_[lo + row];
+  }
+  rows_times(n, sh.Qr.data(), x, y, q_.data() + lo, p_.data() + lo);
   for (int k = 0; k < n; ++k) {
-    const double* col = b.Q.data() + static_cast<std::size_t>(k) * n;
-    double qk = 0, pk = 0;
-    for (int row = 0; row < n; ++row) {
-      qk += col[row] * x[row];
-      pk += col[row] * (s.v[lo + row] - B_[lo + row]);
-    }
-    q_[lo + k] = q0_[lo + k] = qk;
-    p_[lo + k] = p0_[lo + k] = pk;
+    const double qk = q_[lo + k], pk = p_[lo + k];
+    q0_[lo + k] = qk;
+    p0_[lo + k] = pk;
     sE_[lo + k] = std::sqrt(pk * pk + b.modes[k].omega2 * qk * qk);
   }
   // What the projection's round-off leaves of each row the screen reads (the end rows, a stuck
