@@ -90,7 +90,10 @@ void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans,
 double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active,
                          const Fn& f, double t, bool end, bool slope) const {
   const int j = f.block;
-  if (f.dir != 0) return f.dir * (slope ? spans.a(j, end) : spans.v(j, end) + eps_v_ * f.dir);
+  // At a fresh projection's time the rows read are the state's own u and v (SpanModes::fresh).
+  auto fresh_at_start = [&](int i) { return !end && spans.fresh(i); };
+  if (f.dir != 0)
+    return f.dir * (slope ? spans.a(j, end) : (fresh_at_start(j) ? s.v[j] : spans.v(j, end)) + eps_v_ * f.dir);
   // The driving force as the Dormand-Prince search sums it (event_search.cpp), and its slope.
   const double uj = s.u[j];
   double F = K_s_ * (v_ * t - uj), dF = K_s_ * v_;
@@ -99,8 +102,8 @@ double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans,
     switch (f.side[side]) {
       case kNone: continue;
       case kSpan:
-        F += K_int_ * (spans.u(nb, end) - uj);
-        if (slope) dF += K_int_ * spans.v(nb, end);
+        F += K_int_ * ((fresh_at_start(nb) ? s.u[nb] : spans.u(nb, end)) - uj);
+        if (slope) dF += K_int_ * (fresh_at_start(nb) ? s.v[nb] : spans.v(nb, end));
         break;
       case kSettled:
         F += K_int_ * (active.settled_u(nb, t) - uj);

@@ -120,8 +120,8 @@ void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockR
     const int k = span_of_[r.lo];
     bool keep = current && k >= 0 && kept_[k].lo == r.lo && kept_[k].hi == r.hi;
     for (int i = std::max(r.lo - 1, 0); keep && i < std::min(r.hi + 1, N_); ++i) keep = !switched[i];
-    if (keep) spans_.push_back(kept_[k]);
-    else spans_.push_back({r.lo, r.hi, nullptr, s.t, 0, false});
+    if (keep) spans_.push_back(kept_[k]), spans_.back().fresh = false;
+    else spans_.push_back({r.lo, r.hi, nullptr, s.t, 0, false, true});
   }
   for (const Span& sp : kept_) std::fill(span_of_.begin() + sp.lo, span_of_.begin() + sp.hi, -1);
   for (std::size_t k = 0; k < spans_.size(); ++k)
@@ -223,6 +223,7 @@ void SpanModes::take(double t) {
   std::swap(q_, qn_);
   std::swap(p_, pn_);
   t_ = t;
+  for (Span& sp : spans_) sp.fresh = false;  // the rows have left the projected state
 }
 
 void SpanModes::take_at(double tau, double t) {

@@ -68,6 +68,10 @@ class SpanModes {
   // Row evaluations of block i, which must be in a run: at the current state (end = false) or
   // at the step's end (end = true, time now() + h of the last advance).
   bool holds(int i) const { return span_of_[i] >= 0; }
+  // The run holding block i was projected by the last project(): its rows the screen reads (end
+  // rows and sliding blocks' rows) are then, at now(), exactly the state's u and v (their offsets
+  // make them so, and a + (x - a) rounds to x when a is x's round-off away from it).
+  bool fresh(int i) const { return spans_[span_of_[i]].fresh; }
   double u(int i, bool end) const { return A_[i] + B_[i] * (end ? t_ + h_ : t_) + row_dot(i, end ? qn_.data() : q_.data()) + du_[i]; }
   double v(int i, bool end) const { return B_[i] + row_dot(i, end ? pn_.data() : p_.data()) + dv_[i]; }
   double a(int i, bool end) const;  // the acceleration
@@ -100,6 +104,7 @@ class SpanModes {
     double t0;  // projection time of q0_, p0_
     int since;  // grid steps since the modes were last set from the closed form
     bool grooves;  // no contact block in it
+    bool fresh;    // projected by the last project()
   };
   const Shape& shape(int n, bool left, bool right);
   void project_one(const Chain& c, const State& s, Span& sp);
