@@ -26,7 +26,8 @@ namespace sb {
   X(switch_instants, "instants at which the switching rules were applied")                                      \
   X(samples, "samples of mu(t) served one by one")                                                              \
   X(stretch_samples, "samples taken at once as affine stretches of a quiet phase")                             \
-  X(summed_samples, "samples of a quiet phase taken as closed-form sums over its modes")
+  X(summed_samples, "samples of a quiet phase taken as closed-form sums over its modes")                     \
+  X(peak_samples, "loading samples of a quiet phase taken as a stretch: bounds pass over those below its peak")
 
 // name, meaning. Seconds of one run (0 unless timed).
 #define SB_WORK_TIMES(X)                                                                                   \

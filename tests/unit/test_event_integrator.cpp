@@ -387,7 +387,8 @@ class OneByOne final : public sb::Observer {
 };
 
 TEST(EventIntegrator, SummedSampleBlocksEqualTheSamplesOneByOne) {
-  // After loading, blocks of quiet-phase samples reach the mu_d window as closed-form sums over
+  // During loading, stretches of quiet-phase samples are taken from bounds on the friction sums
+  // (QuietPhase::envelope), looking only at the samples that may hold the peak. After loading, blocks of quiet-phase samples reach the mu_d window as closed-form sums over
   // the modes (QuietPhase::window_sums). Against the same run serving them one by one: the same
   // switching history (samples never act on the dynamics), mu_s and the window count exactly,
   // mu_d to round-off (the sums of up to 64 samples rounded differently; measured 1e-16).
@@ -401,11 +402,16 @@ TEST(EventIntegrator, SummedSampleBlocksEqualTheSamplesOneByOne) {
   const std::vector<double>& log2 = p.log[1];
   ASSERT_TRUE(summed.slipped());
   EXPECT_GT(s1.work.summed_samples, 1000);  // the blocks were taken
-  EXPECT_EQ(s2.work.summed_samples, 0);
-  EXPECT_EQ(s1.work.samples + s1.work.stretch_samples + s1.work.summed_samples,
+  EXPECT_GT(s1.work.peak_samples, 1000);    // and the loading stretches
+  EXPECT_EQ(s2.work.summed_samples + s2.work.peak_samples, 0);
+  EXPECT_EQ(s1.work.samples + s1.work.stretch_samples + s1.work.summed_samples + s1.work.peak_samples,
             s2.work.samples + s2.work.stretch_samples);
   EXPECT_EQ(log1, log2);
+  // Loading stretches look only at the samples their bounds leave: the peak, its time and the
+  // signed peak are still those of every sample, bit for bit.
   EXPECT_EQ(summed.mu_s(), single.mu_s());
+  EXPECT_EQ(summed.t_peak(), single.t_peak());
+  EXPECT_EQ(summed.mu_s_signed(), single.mu_s_signed());
   EXPECT_EQ(summed.window_samples(), single.window_samples());
   EXPECT_NEAR(summed.mu_d(), single.mu_d(), 1e-14 * single.mu_d());
   EXPECT_NEAR(summed.mu_d_signed(), single.mu_d_signed(), 1e-14 * std::fabs(single.mu_d_signed()));

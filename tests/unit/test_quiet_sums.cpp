@@ -185,4 +185,52 @@ TEST(QuietPhaseSums, WindowSumsEqualTheSamplesSummedOneByOne) {
   EXPECT_GT(refused, 0) << "a block where some force changes sign must be refused";
 }
 
+TEST(QuietPhaseSums, EnvelopeHoldsEverySampleOfItsStretch) {
+  // The same scene: bounds on the friction sums over stretches of 16 samples (envelope), from
+  // the modes at the stretch's start or from the phase's start, against friction_sums at every
+  // sample. Every sample must lie within reach of the straight line, and the bounds must be
+  // tight enough to pass over samples (what they are for: a reach as large as the sums
+  // themselves would hold trivially); a stretch in which a force may change sign is refused.
+  const std::vector<std::uint8_t> contact = {0, 1, 1, 0, 0, 1, 0, 1, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0};
+  const int N = static_cast<int>(contact.size());
+  const sb::Chain c = sbtest::hand_chain(contact, 7.3e5, 1e4, std::vector<double>(N, 1e9), std::vector<double>(N, 0.0));
+  sb::State s = sb::State::at_rest(c);
+  const double dt = 1e-5;
+  s.t = 1000 * dt;
+  for (int i = 0; i < N; ++i) {
+    s.u[i] = c.v_slider * s.t + 1e-9 * std::sin(0.7 + 1.3 * i);
+    s.v[i] = contact[i] ? 0.0 : 0.03 * std::cos(2.0 + i);
+  }
+  sb::event_detail::QuietPhase q(c);
+  q.set_sample_dt(dt);
+  q.set_sample_scales(1e-14, 1e-10);
+  q.begin(c, s.t, s.u.data(), s.v.data());
+  const long n = 16;
+  int taken = 0, refused = 0, tight = 0;
+  for (long k0 = 1001; k0 < 1001 + 100 * n; k0 += n) {
+    sb::SampleStretch::Envelope e{};
+    const bool ok = q.envelope(k0, dt, n, e);
+    bool refused_here = !ok;
+    for (long j = 0; j < n; ++j) {
+      const double t = static_cast<double>(k0 + j) * dt;
+      q.advance_sample(t, true);
+      if (refused_here) continue;
+      double x, y;
+      q.friction_sums(t, x, y);
+      const double w = static_cast<double>(j) / static_cast<double>(n - 1);
+      EXPECT_LE(std::fabs(x - (e.abs_first + (e.abs_last - e.abs_first) * w)), e.reach) << "sample " << k0 + j;
+      EXPECT_LE(std::fabs(y - (e.signed_first + (e.signed_last - e.signed_first) * w)), e.reach) << "sample " << k0 + j;
+    }
+    if (!ok) {
+      ++refused;
+      continue;
+    }
+    ++taken;
+    tight += e.reach < 1e-3 * std::fabs(e.abs_last);
+  }
+  EXPECT_GT(taken, 10);
+  EXPECT_GT(tight, 5) << "the bounds should be far inside the sums once the modes have decayed";
+  EXPECT_GT(refused, 0) << "a stretch where some force changes sign must be refused";
+}
+
 }  // namespace

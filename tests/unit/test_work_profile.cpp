@@ -55,7 +55,7 @@ void expect_consistent_counts(const Scene& sc) {
     // block summed over the modes (the sample at
     // t = 0 is the run's start, not counted).
     const auto expected = static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
-    EXPECT_EQ(w.samples + w.stretch_samples + w.summed_samples, expected);
+    EXPECT_EQ(w.samples + w.stretch_samples + w.summed_samples + w.peak_samples, expected);
     // A switch is a start or a stop, and a block stops only after it started.
     EXPECT_GT(w.slip_starts, 0);
     EXPECT_GE(r.switches, w.slip_starts);

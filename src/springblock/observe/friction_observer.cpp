@@ -168,9 +168,10 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   return taken;
 }
 
-long FrictionObserver::sample_sums(const Chain& c, const State&, long k0, double dt, long n,
+long FrictionObserver::sample_sums(const Chain& c, const State& s_stretch, long k0, double dt, long n,
                                    SampleStretch& stretch) {
-  if (!slipped_ || n <= 0 || contact_runs_.empty() || wants_stop()) return 0;
+  if (n <= 0 || contact_runs_.empty() || wants_stop()) return 0;
+  if (!slipped_) return loading_stretch(c, s_stretch, k0, dt, n, stretch);
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
   const double t_win = t_slip_ + cfg_.mu_d_skip_s;
   const bool before = t_of(k0 + n - 1) < t_win, inside = t_of(k0) >= t_win;
@@ -192,6 +193,40 @@ long FrictionObserver::sample_sums(const Chain& c, const State&, long k0, double
       while (stress_due(s.t)) add_snapshot(c, s.t, [&](int i) { return friction_force(c, s, i); });
     }
   last_t_ = t_of(k_end - 1);
+  if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
+  return n;
+}
+
+// Loading: mu_s is the largest sample and t_peak the first one that reaches it, so a sample
+// whose upper bound is below the largest lower bound in the stretch (or below the running
+// maximum) can change neither; the others are looked at in order and recorded as record() would,
+// which gives the mu_s, t_peak and signed peak of one-by-one service bit for bit. Not with a
+// series or a snapshot (they read every sample), under the drop rule (its end of loading is a
+// test on every sample), nor once the all-slipped rule holds (the first sample ends loading).
+long FrictionObserver::loading_stretch(const Chain& c, const State& s, long k0, double dt, long n,
+                                       SampleStretch& stretch) {
+  auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
+  if (cfg_.peak_rule != ExtractionRules::PeakRule::AllSlipped || cfg_.keep_series || stress_due(t_of(k0 + n - 1)))
+    return 0;
+  if (!s.slipped_once.empty() && s.n_slipped_once >= c.n_contact) return 0;
+  SampleStretch::Envelope e{};
+  if (!stretch.envelope(k0, n, e)) return 0;
+  const double F = cfg_.F_load;
+  auto line = [n](double first, double last, long j) {
+    return n == 1 ? first : first + (last - first) * (static_cast<double>(j) / static_cast<double>(n - 1));
+  };
+  const double floor_abs = std::max(std::max(e.abs_first, e.abs_last) - e.reach, running_max_ * F);
+  const double floor_signed = std::max(std::max(e.signed_first, e.signed_last) - e.reach, running_max_signed_ * F);
+  for (long j = 0; j < n; ++j) {
+    if (line(e.abs_first, e.abs_last, j) + e.reach < floor_abs &&
+        line(e.signed_first, e.signed_last, j) + e.reach < floor_signed)
+      continue;
+    const State& x = stretch.at(k0 + j);
+    const double mu = x.presummed.abs / F;
+    if (mu > running_max_) running_max_ = mu, t_max_ = x.t;
+    running_max_signed_ = std::max(running_max_signed_, x.presummed.signed_sum / F);
+  }
+  last_t_ = t_of(k0 + n - 1);
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);
   return n;
 }

@@ -54,6 +54,8 @@ class FrictionObserver final : public Observer {
   // samples before the window is taken without a value, one inside it as its sums, one across
   // the window's start is left to sample(). The series and snapshots of a block taken come from
   // SampleStretch::at, and do not change the sums.
+  // Before it (loading), a stretch is taken from its bounds (SampleStretch::envelope) where they
+  // show which samples may hold the peak: only those are looked at (loading_stretch).
   long sample_sums(const Chain& chain, const State& state, long k0, double dt, long n,
                    SampleStretch& stretch) override;
   bool wants_stop() const override;
@@ -83,6 +85,7 @@ class FrictionObserver final : public Observer {
   const std::vector<StressSnapshot>& stress() const { return stress_; }
 
  private:
+  long loading_stretch(const Chain& c, const State& s, long k0, double dt, long n, SampleStretch& stretch);
   // One sample's mu(t), mu_signed(t) and sliding count into the peak, the window and the series.
   void record(const Chain& c, const State& s, double mu, double mu_signed, int n_sliding);
   // A stress snapshot is due at a sample at time t (the first sample at or after its time).

@@ -18,6 +18,17 @@ class SampleStretch {
   // needs_positions_at says so, its positions: for a series or a snapshot. Does not change what
   // sums() gives.
   virtual const State& at(long k) = 0;
+  // Bounds on the friction sums over samples k0 .. k0 + n - 1 for an observer after their maximum:
+  // at sample k0 + j each sum lies within `reach` of the straight line from its value `first` at
+  // j = 0 to `last` at j = n - 1 (evaluated as first + (last - first) j / (n - 1)), round-off of
+  // the sums, the line and the bounds included. False when there are none (no sign is fixed).
+  struct Envelope {
+    double abs_first, abs_last, signed_first, signed_last, reach;
+  };
+  virtual bool envelope(long k0, long n, Envelope& e) {
+    (void)k0, (void)n, (void)e;
+    return false;
+  }
 };
 
 class Observer {

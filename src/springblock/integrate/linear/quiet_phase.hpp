@@ -35,6 +35,7 @@
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/linear/run_basis.hpp"
 #include "springblock/model.hpp"
+#include "springblock/observe/observer.hpp"
 
 namespace sb::event_detail {
 
@@ -82,6 +83,15 @@ class QuietPhase {
   // sum. Leaves the sample cursor alone; the sums depend on k0 and n only, not on what was
   // sampled before.
   bool window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
+  // For an observer of the loading peak: bounds on the friction sums friction_sums gives at the
+  // samples k0 .. k0 + n - 1 (SampleStretch::Envelope), when no contact block's force can change
+  // sign over them; false otherwise. Leaves the sample cursor alone.
+  bool envelope(long k0, double dt, long n, SampleStretch::Envelope& env);
+  // The sample cursor (advance_sample's modes and time) kept and put back, for samples an
+  // observer looked at inside a stretch it then declined: the samples served one by one after it
+  // see the cursor they would have seen without the offer.
+  void save_cursor();
+  void restore_cursor();
 
   struct Next {
     double t;   // event time, or t_limit when no stuck block reaches its threshold before it
@@ -131,6 +141,9 @@ class QuietPhase {
   // deviation from it; the times after which the modes no longer count.
   void project(const GrooveRun& s, const double* u, const double* v, bool on_path);
   void set_dead_times(GrooveRun& s) const;
+  // window_sums' and envelope's test (quiet_phase_window.cpp), and an edge's modal reach.
+  bool keeps_signs(double tau0, double tau_last, bool need_sums);
+  double edge_reach(const Edge& e) const;
   // u, v of segment s at absolute time t from its modal coordinates q, qd.
   void to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
                    double* v) const;
@@ -152,6 +165,9 @@ class QuietPhase {
   double sample_dt_ = 0, ts_ = 0;
   double sample_eps_u_ = 0, sample_eps_v_ = 0;
   bool sample_valid_ = false;
+  std::vector<double> qs_kept_, qds_kept_;  // save_cursor
+  double ts_kept_ = 0;
+  bool sample_valid_kept_ = false;
   CommonSlopeSum interior_;        // friction_sums: the contact blocks with no groove neighbour
   bool interior_ready_ = false;    // interior_ holds this phase's forces
   std::vector<double> end_dots_;   // friction_sums: per segment, first and last row . q

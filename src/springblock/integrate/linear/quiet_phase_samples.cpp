@@ -114,6 +114,16 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
   sample_valid_ = true;
 }
 
+void QuietPhase::save_cursor() {
+  qs_kept_ = qs_, qds_kept_ = qds_;
+  ts_kept_ = ts_, sample_valid_kept_ = sample_valid_;
+}
+
+void QuietPhase::restore_cursor() {
+  qs_.swap(qs_kept_), qds_.swap(qds_kept_);
+  ts_ = ts_kept_, sample_valid_ = sample_valid_kept_;
+}
+
 void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) const {
   const double tau = t - t0_;
   for (const GrooveRun& s : segs_) {

@@ -18,32 +18,41 @@
 
 namespace sb::event_detail {
 
-bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
-  sum_abs = sum_signed = 0;
-  if (n <= 0) return false;
-  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
-  const double tau0 = tau_of(k0), tau_last = tau_of(k0 + n - 1);
+// Whether every contact block's force keeps its sign over tau0 .. tau_last (the tests above),
+// with bounds on the live segments' end rows' modal part from tau0 on in end_bound_. need_sums:
+// the bounds from the modes at tau0 (left in wq_, wp_ for the sums), and false when a mode has no
+// closed-form sample sum; otherwise from modes already at hand, at an earlier time.
+bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
   if (!interior_ready_) {
     interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
     interior_ready_ = true;
   }
   // Interior forces: none crosses zero inside the stretch.
-  const int p0 = interior_.crossed(tau0);
-  if (interior_.crossed(tau_last) != p0) return false;
+  if (interior_.crossed(tau_last) != interior_.crossed(tau0)) return false;
   // The live segments' modes at tau0, and bounds on their end rows' modal part from then on.
   for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
     const GrooveRun& s = segs_[sgi];
     end_bound_[2 * sgi] = end_bound_[2 * sgi + 1] = 0.0;
     if (!(tau0 <= s.sample_dead_tau)) continue;
     const RunBasis& d = *s.basis;
-    double* q = wq_.data() + s.offset;
-    double* p = wp_.data() + s.offset;
-    DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau0,
-                         [&](int k, const DampedMode& md, double e) {
-                           md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau0, e, q[k], p[k]);
-                         });
+    const double* q = wq_.data() + s.offset;
+    const double* p = wp_.data() + s.offset;
+    if (need_sums) {
+      double* qw = wq_.data() + s.offset;
+      double* pw = wp_.data() + s.offset;
+      DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau0,
+                           [&](int k, const DampedMode& md, double e) {
+                             md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau0, e, qw[k], pw[k]);
+                           });
+    } else {
+      // Bounds alone: the modes at any earlier time bound them too (the energy never grows),
+      // so the sample cursor's, when it is not past tau0, or the phase's start.
+      const bool cursor = sample_valid_ && ts_ - t0_ <= tau0;
+      q = (cursor ? qs_ : q0_).data() + s.offset;
+      p = (cursor ? qds_ : p0_).data() + s.offset;
+    }
     for (int k = 0; k < s.n; ++k) {
-      if (std::isnan(d.sample_sum[k][0])) return false;  // no closed-form sum for this mode
+      if (need_sums && std::isnan(d.sample_sum[k][0])) return false;  // no closed-form sum for this mode
       const double amp = std::sqrt((p[k] * p[k] + d.modes[k].omega2 * q[k] * q[k]) / d.modes[k].omega2);
       end_bound_[2 * sgi] += std::fabs(d.first_row[k]) * amp;
       end_bound_[2 * sgi + 1] += std::fabs(d.last_row[k]) * amp;
@@ -52,11 +61,26 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   // Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at
   // both ends of the stretch (so everywhere between).
   for (const Edge& e : edges_) {
-    double reach = 0;
-    for (int r = 0; r < e.nseg; ++r) reach += K_int_ * end_bound_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
+    const double reach = edge_reach(e);
     const double f0 = e.fa + e.fb * tau0, sg = f0 >= 0 ? 1.0 : -1.0;
     if (!(sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach)) return false;
   }
+  return true;
+}
+
+double QuietPhase::edge_reach(const Edge& e) const {
+  double reach = 0;
+  for (int r = 0; r < e.nseg; ++r) reach += K_int_ * end_bound_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
+  return reach;
+}
+
+bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
+  sum_abs = sum_signed = 0;
+  if (n <= 0) return false;
+  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
+  const double tau0 = tau_of(k0);
+  if (!keeps_signs(tau0, tau_of(k0 + n - 1), true)) return false;
+  const int p0 = interior_.crossed(tau0);
   // Each live segment's end rows summed over its live samples (those with tau <= sample_dead_tau,
   // as friction_sums counts them).
   for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
@@ -93,6 +117,29 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
     sum_abs += e.fa + e.fb * tau0 >= 0 ? f : -f;  // every sample's sign (checked above)
     sum_signed += f;
   }
+  return true;
+}
+
+
+// Each sum is affine in tau up to the edges' modal parts, whose sizes edge_reach bounds: with
+// every sign fixed, sum |f| = sum sign(f) f. The sums friction_sums forms round differently from
+// the exact values, and the straight line between the ends rounds too; a margin of 1e-9 of the
+// sums' size, millions of times their round-off, keeps the bound a bound.
+bool QuietPhase::envelope(long k0, double dt, long n, SampleStretch::Envelope& env) {
+  if (n <= 0) return false;
+  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
+  const double tau0 = tau_of(k0), tau1 = tau_of(k0 + n - 1);
+  if (!keeps_signs(tau0, tau1, false)) return false;
+  interior_.at(tau0, env.abs_first, env.signed_first);
+  interior_.at(tau1, env.abs_last, env.signed_last);
+  double reach = 0;
+  for (const Edge& e : edges_) {
+    const double f0 = e.fa + e.fb * tau0, f1 = e.fa + e.fb * tau1, sg = f0 >= 0 ? 1.0 : -1.0;
+    env.abs_first += sg * f0, env.abs_last += sg * f1;
+    env.signed_first += f0, env.signed_last += f1;
+    reach += edge_reach(e);
+  }
+  env.reach = reach + 1e-9 * (std::fabs(env.abs_first) + std::fabs(env.abs_last) + reach);
   return true;
 }
 

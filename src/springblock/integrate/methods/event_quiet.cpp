@@ -4,22 +4,25 @@
 // the settle scales dropped (QuietPhase::set_sample_scales); once every groove has rung down the
 // observer may take the rest of the phase's samples as one affine stretch (sample_affine).
 #include <algorithm>
+#include <stdexcept>
 
 #include "springblock/integrate/methods/event_run.hpp"
 
 namespace sb::event_detail {
 namespace {
 
-// A SampleStretch from two callables (the quiet phase's sums, one sample's state).
-template <class Sums, class At>
+// A SampleStretch from three callables (the quiet phase's sums, its envelope, one sample's state).
+template <class Sums, class Env, class At>
 class StretchOf final : public SampleStretch {
  public:
-  StretchOf(Sums sums, At at) : sums_(std::move(sums)), at_(std::move(at)) {}
+  StretchOf(Sums sums, Env env, At at) : sums_(std::move(sums)), env_(std::move(env)), at_(std::move(at)) {}
   bool sums(long k0, long n, double& sum_abs, double& sum_signed) override { return sums_(k0, n, sum_abs, sum_signed); }
+  bool envelope(long k0, long n, Envelope& e) override { return env_(k0, n, e); }
   const State& at(long k) override { return at_(k); }
 
  private:
   Sums sums_;
+  Env env_;
   At at_;
 };
 
@@ -68,6 +71,7 @@ bool EventRun::serve_quiet_samples(double t_next) {
   std::copy(s_.dir.begin(), s_.dir.end(), sample_.dir.begin());
   const double dead_after = quiet_->all_dead_after();
   affine_ready_ = false;
+  long long next_offer = clock_.index();  // a declined stretch is not offered again sample by sample
   while (clock_.next() < t_next) {
     if (clock_.next() >= dead_after) {
       bool stopped = false;
@@ -77,7 +81,7 @@ bool EventRun::serve_quiet_samples(double t_next) {
       }
     }
     bool stopped = false;
-    if (ends_only_ && offer_block(std::min(t_next, dead_after), stopped)) {
+    if (ends_only_ && clock_.index() >= next_offer && offer_block(std::min(t_next, dead_after), stopped, next_offer)) {
       if (stopped) return false;
       continue;
     }
@@ -123,21 +127,36 @@ void EventRun::took_samples(long used, bool& stopped) {
   }
 }
 
-// A whole block of QuietPhase::kSampleBlock samples, from an aligned index and ending before
-// t_stop, offered as closed-form sums (Observer::sample_sums); false when it was not taken.
-bool EventRun::offer_block(double t_stop, bool& stopped) {
+// The samples from the clock's next to the next multiple of QuietPhase::kSampleBlock, before
+// t_stop, offered as one stretch (Observer::sample_sums); false when it was not taken (next_offer:
+// the stretch's end, before which it is not offered again). A whole
+// aligned block offers its closed-form sums (window_sums); any stretch offers bounds (envelope),
+// which an observer of the loading peak takes. Either way the stretch ends where the sample
+// recurrence restarts (an aligned index) or where the phase's samples end, so the samples after
+// it are served as they would be without it; a sample looked at inside it (at) is brought there
+// by the recurrence through every sample before it, the doubles one-by-one service gives.
+bool EventRun::offer_block(double t_stop, bool& stopped, long long& next_offer) {
   const long long k0 = clock_.index();
-  const long n = QuietPhase::kSampleBlock;
-  if (k0 % n != 0 || !(clock_.time_of(k0 + n - 1) < t_stop)) return false;
+  const long block = QuietPhase::kSampleBlock;
+  const long long k_end = std::min((k0 / block + 1) * block, clock_.first_at_or_after(t_stop));
+  const long n = static_cast<long>(k_end - k0);
+  next_offer = k_end;
+  if (n <= 0) return false;
+  const bool whole = n == block;
   const double dt = clock_.dt();
-  StretchOf block(
+  long long cursor = k0 - 1;  // the last sample advance_sample was brought to in this stretch
+  bool summed = false;
+  StretchOf stretch(
       [&](long k, long m, double& sum_abs, double& sum_signed) {
-        return quiet_->window_sums(k, dt, m, sum_abs, sum_signed);
+        return summed = whole && quiet_->window_sums(k, dt, m, sum_abs, sum_signed);
       },
+      [&](long k, long m, SampleStretch::Envelope& e) { return quiet_->envelope(k, dt, m, e); },
       [&](long k) -> const State& {
+        if (k < cursor) throw std::logic_error("offer_block: samples looked at out of order");
+        if (cursor < k0) quiet_->save_cursor();
+        while (cursor < k) quiet_->advance_sample(clock_.time_of(++cursor), true);
         sample_.t = clock_.time_of(k);
         stamp_sample();
-        quiet_->advance_sample(sample_.t, true);
         sample_.presummed.valid = true;
         quiet_->friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
         sample_.presummed.n_sliding = 0;
@@ -147,10 +166,11 @@ bool EventRun::offer_block(double t_stop, bool& stopped) {
       });
   sample_.t = clock_.next();
   stamp_sample();
-  const long used = obs_.sample_sums(c_, sample_, static_cast<long>(k0), dt, n, block);
+  const long used = obs_.sample_sums(c_, sample_, static_cast<long>(k0), dt, n, stretch);
   sample_.presummed.valid = false;
+  if (used < n && cursor >= k0) quiet_->restore_cursor();
   if (used <= 0) return false;
-  s_.work.summed_samples += used;
+  (summed ? s_.work.summed_samples : s_.work.peak_samples) += used;
   took_samples(used, stopped);
   return true;
 }

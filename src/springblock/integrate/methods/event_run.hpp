@@ -95,7 +95,7 @@ class EventRun {
   // the observer took none, so the caller samples one by one).
   bool sample_affine_stretch(double t_next, bool& stopped);
   // A block of quiet-phase samples taken as sums over the modes (event_quiet.cpp).
-  bool offer_block(double t_stop, bool& stopped);
+  bool offer_block(double t_stop, bool& stopped, long long& next_offer);
   void took_samples(long used, bool& stopped);
 
   const Chain& c_;
