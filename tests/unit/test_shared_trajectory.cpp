@@ -82,6 +82,21 @@ TEST(SharedTrajectory, EventMethodWithGroovesMatchesOwnRuns) {
   expect_same_as_own_runs(variants(base("periodic:3,3", "event"), "2s"));  // 3 t0 = 2.4 s
 }
 
+// Grooves of ten blocks: the loading phase's quiet phases are long, so several views take the
+// same stretch of samples from its bounds (QuietPhase::envelope), each looking only at the
+// samples that may hold its peak; they look in their own order and must each get the doubles of
+// their own runs.
+TEST(SharedTrajectory, EventMethodWithLongGroovesMatchesOwnRuns) {
+  Scene b = base("periodic:10,10", "event");
+  set_scene_field(b, "N", "120");
+  set_scene_field(b, "length", "2.4cm");
+  set_scene_field(b, "duration", "2t0");
+  std::vector<Scene> v = variants(b, "1s");  // 2 t0 = 1.6 s
+  set_scene_field(v[1], "duration", "1.5t0");
+  set_scene_field(v[5], "duration", "1.8t0");
+  expect_same_as_own_runs(v);
+}
+
 TEST(SharedTrajectory, EventMethodSmoothMatchesOwnRuns) {
   expect_same_as_own_runs(variants(base("smooth", "event"), "1s"));  // 3 t0 = 1.2 s
 }

@@ -38,7 +38,10 @@ inline TransientEnvelope transient_envelope(const RunBasis& b, const double* q0,
     const double s = m.omega2 - m.alpha * m.alpha;
     if (!(m.alpha > 0) || !(s > 0)) return TransientEnvelope{};
     const double w = std::sqrt(s), P = p0[k] + m.alpha * q0[k];
-    const double C = std::hypot(q0[k], P / w);
+    // sqrt of the sum of squares, not hypot (several times dearer): displacements in m and
+    // velocities over rates are far from the squares' overflow and underflow.
+    const double Pw = P / w;
+    const double C = std::sqrt(q0[k] * q0[k] + Pw * Pw);
     e.u += C;
     e.v += C * std::sqrt(m.omega2);
     e.alpha = m.alpha;

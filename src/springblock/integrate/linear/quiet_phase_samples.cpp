@@ -120,7 +120,7 @@ void QuietPhase::save_cursor() {
 }
 
 void QuietPhase::restore_cursor() {
-  qs_.swap(qs_kept_), qds_.swap(qds_kept_);
+  qs_ = qs_kept_, qds_ = qds_kept_;  // copies: the kept cursor may be needed again
   ts_ = ts_kept_, sample_valid_ = sample_valid_kept_;
 }
 

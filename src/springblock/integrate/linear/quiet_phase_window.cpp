@@ -19,9 +19,11 @@
 namespace sb::event_detail {
 
 // Whether every contact block's force keeps its sign over tau0 .. tau_last (the tests above),
-// with bounds on the live segments' end rows' modal part from tau0 on in end_bound_. need_sums:
-// the bounds from the modes at tau0 (left in wq_, wp_ for the sums), and false when a mode has no
-// closed-form sample sum; otherwise from modes already at hand, at an earlier time.
+// with the live segments' modes at tau0 in wq_, wp_ and bounds on their end rows' modal part from
+// then on in end_bound_. need_sums: also false when a mode has no closed-form sample sum. The
+// bounds come from the modes at tau0 itself, never from an earlier sample's, so whether a stretch
+// is taken depends on the phase and the stretch only, not on which samples were served before
+// it (an observer keeping the series gets the sums of one that does not).
 bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
   if (!interior_ready_) {
     interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
@@ -29,43 +31,52 @@ bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
   }
   // Interior forces: none crosses zero inside the stretch.
   if (interior_.crossed(tau_last) != interior_.crossed(tau0)) return false;
-  // The live segments' modes at tau0, and bounds on their end rows' modal part from then on.
-  for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
-    const GrooveRun& s = segs_[sgi];
-    end_bound_[2 * sgi] = end_bound_[2 * sgi + 1] = 0.0;
-    if (!(tau0 <= s.sample_dead_tau)) continue;
-    const RunBasis& d = *s.basis;
-    const double* q = wq_.data() + s.offset;
-    const double* p = wp_.data() + s.offset;
-    if (need_sums) {
-      double* qw = wq_.data() + s.offset;
-      double* pw = wp_.data() + s.offset;
-      DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau0,
-                           [&](int k, const DampedMode& md, double e) {
-                             md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau0, e, qw[k], pw[k]);
-                           });
-    } else {
-      // Bounds alone: the modes at any earlier time bound them too (the energy never grows),
-      // so the sample cursor's, when it is not past tau0, or the phase's start.
-      const bool cursor = sample_valid_ && ts_ - t0_ <= tau0;
-      q = (cursor ? qs_ : q0_).data() + s.offset;
-      p = (cursor ? qds_ : p0_).data() + s.offset;
-    }
-    for (int k = 0; k < s.n; ++k) {
-      if (need_sums && std::isnan(d.sample_sum[k][0])) return false;  // no closed-form sum for this mode
-      const double amp = std::sqrt((p[k] * p[k] + d.modes[k].omega2 * q[k] * q[k]) / d.modes[k].omega2);
-      end_bound_[2 * sgi] += std::fabs(d.first_row[k]) * amp;
-      end_bound_[2 * sgi + 1] += std::fabs(d.last_row[k]) * amp;
-    }
-  }
-  // Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at
-  // both ends of the stretch (so everywhere between).
+  if (need_sums)
+    for (const GrooveRun& s : segs_)
+      for (int k = 0; k < s.n && tau0 <= s.sample_dead_tau; ++k)
+        if (std::isnan(s.basis->sample_sum[k][0])) return false;  // no closed-form sum for this mode
+  evaluate_bounds(tau0);
+  return edges_clear(tau0, tau_last);
+}
+
+// Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at both
+// ends of the stretch (so everywhere between).
+bool QuietPhase::edges_clear(double tau0, double tau_last) const {
   for (const Edge& e : edges_) {
     const double reach = edge_reach(e);
     const double f0 = e.fa + e.fb * tau0, sg = f0 >= 0 ? 1.0 : -1.0;
     if (!(sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach)) return false;
   }
   return true;
+}
+
+// The live segments' modes at tau0 into wq_, wp_, and end_bound_ from them.
+void QuietPhase::evaluate_bounds(double tau0) {
+  for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
+    const GrooveRun& s = segs_[sgi];
+    end_bound_[2 * sgi] = end_bound_[2 * sgi + 1] = 0.0;
+    if (!(tau0 <= s.sample_dead_tau)) continue;
+    const RunBasis& d = *s.basis;
+    double* q = wq_.data() + s.offset;
+    double* p = wp_.data() + s.offset;
+    DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau0,
+                         [&](int k, const DampedMode& md, double e) {
+                           md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau0, e, q[k], p[k]);
+                         });
+    add_bounds(s, wq_.data(), wp_.data(), &end_bound_[2 * sgi]);
+  }
+}
+
+// Bounds on segment s's first and last rows' modal part, added to b[0] and b[1], from its modes
+// at some time (entries s.offset + k of the flat q, p): they hold at every later time.
+void QuietPhase::add_bounds(const GrooveRun& s, const double* q, const double* p, double* b) const {
+  const RunBasis& d = *s.basis;
+  for (int k = 0; k < s.n; ++k) {
+    const int i = s.offset + k;
+    const double amp = std::sqrt((p[i] * p[i] + d.modes[k].omega2 * q[i] * q[i]) / d.modes[k].omega2);
+    b[0] += std::fabs(d.first_row[k]) * amp;
+    b[1] += std::fabs(d.last_row[k]) * amp;
+  }
 }
 
 double QuietPhase::edge_reach(const Edge& e) const {

@@ -4,7 +4,6 @@
 // the settle scales dropped (QuietPhase::set_sample_scales); once every groove has rung down the
 // observer may take the rest of the phase's samples as one affine stretch (sample_affine).
 #include <algorithm>
-#include <stdexcept>
 
 #include "springblock/integrate/methods/event_run.hpp"
 
@@ -128,10 +127,10 @@ void EventRun::took_samples(long used, bool& stopped) {
 }
 
 // The samples from the clock's next to the next multiple of QuietPhase::kSampleBlock, before
-// t_stop, offered as one stretch (Observer::sample_sums); false when it was not taken (next_offer:
-// the stretch's end, before which it is not offered again). A whole
-// aligned block offers its closed-form sums (window_sums); any stretch offers bounds (envelope),
-// which an observer of the loading peak takes. Either way the stretch ends where the sample
+// t_stop, offered as one stretch (Observer::sample_sums) with its closed-form sums (window_sums)
+// for an observer of the mu_d window and bounds on each sample (envelope) for an observer of the
+// loading peak; false when it was not taken (next_offer: the first sample at which a stretch is
+// offered again). The stretch ends where the sample
 // recurrence restarts (an aligned index) or where the phase's samples end, so the samples after
 // it are served as they would be without it; a sample looked at inside it (at) is brought there
 // by the recurrence through every sample before it, the doubles one-by-one service gives.
@@ -140,20 +139,20 @@ bool EventRun::offer_block(double t_stop, bool& stopped, long long& next_offer) 
   const long block = QuietPhase::kSampleBlock;
   const long long k_end = std::min((k0 / block + 1) * block, clock_.first_at_or_after(t_stop));
   const long n = static_cast<long>(k_end - k0);
-  next_offer = k_end;
   if (n <= 0) return false;
-  const bool whole = n == block;
   const double dt = clock_.dt();
   long long cursor = k0 - 1;  // the last sample advance_sample was brought to in this stretch
   bool summed = false;
   StretchOf stretch(
       [&](long k, long m, double& sum_abs, double& sum_signed) {
-        return summed = whole && quiet_->window_sums(k, dt, m, sum_abs, sum_signed);
+        return summed = quiet_->window_sums(k, dt, m, sum_abs, sum_signed);
       },
       [&](long k, long m, SampleStretch::Envelope& e) { return quiet_->envelope(k, dt, m, e); },
       [&](long k) -> const State& {
-        if (k < cursor) throw std::logic_error("offer_block: samples looked at out of order");
+        // Several observers of one trajectory (FanOut) each look in order from the stretch's
+        // start: a look behind the cursor replays the recurrence from there.
         if (cursor < k0) quiet_->save_cursor();
+        else if (k < cursor) quiet_->restore_cursor(), cursor = k0 - 1;
         while (cursor < k) quiet_->advance_sample(clock_.time_of(++cursor), true);
         sample_.t = clock_.time_of(k);
         stamp_sample();
@@ -169,6 +168,8 @@ bool EventRun::offer_block(double t_stop, bool& stopped, long long& next_offer) 
   const long used = obs_.sample_sums(c_, sample_, static_cast<long>(k0), dt, n, stretch);
   sample_.presummed.valid = false;
   if (used < n && cursor >= k0) quiet_->restore_cursor();
+  next_offer = k_end;  // declined: its samples are served one by one (offering its later part
+                       // again cost more evaluations than it saved, measured)
   if (used <= 0) return false;
   (summed ? s_.work.summed_samples : s_.work.peak_samples) += used;
   took_samples(used, stopped);
