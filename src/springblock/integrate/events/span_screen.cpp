@@ -212,6 +212,12 @@ double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& s
 }
 
 double SpanScreen::poly_root(const double* g, double t0, double h) const {
+  // g >= g_0 - sum_j |g_j| h^j on [0, h]. Where that is positive by far more than round-off,
+  // every Bernstein coefficient (g_0 plus weights in [0, 1] times the others) is positive too,
+  // so first_bracket would find nothing: the same answer without the change of basis.
+  double spread = 0, hj = 1.0;
+  for (int j = 1; j <= D; ++j) hj *= h, spread += std::fabs(g[j] * hj);
+  if (g[0] - spread > 1e-10 * (g[0] + spread)) return kInf;
   double lo, hi;
   if (!bern_.first_bracket(g, h, lo, hi)) return kInf;
   auto p = [&](double x) { return horner(g, D, x); };
