@@ -65,22 +65,11 @@ void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans,
   // block order, so it is the last one listed).
   auto add_stuck = [&](int j) {
     if (j < 0 || j >= N || (!fns_.empty() && fns_.back().block == j)) return;
-    Fn f{j, 0, {side_of(j - 1), side_of(j + 1)}, 0, 0, 0, 0, false, false, 0, 0, 0, K_s_ * v_, true, true};
+    Fn f{j, 0, {side_of(j - 1), side_of(j + 1)}, 0, 0, 0, 0, false, false, 0, 0, 0};
     for (int side = 0; side < 2; ++side) {
       const int nb = side == 0 ? j - 1 : j + 1;
-      // |F'| of the cheap form: the slider's pull and each neighbour's speed (u_j is stuck).
-      switch (f.side[side]) {
-        case kSpan:
-          f.M2 += K_int_ * spans.row_bound(nb, 2), f.M4 += K_int_ * spans.row_bound(nb, 4);
-          f.M1 += K_int_ * spans.speed_bound(nb);
-          break;
-        case kModal:
-          f.spread += K_int_ * active.modal_amplitude(nb);
-          f.M1 += K_int_ * std::fabs(active.modal_affine_slope(nb));
-          break;
-        case kSettled: f.M1 += K_int_ * std::fabs(active.settled_drift(nb)); break;
-        default: break;
-      }
+      if (f.side[side] == kSpan) f.M2 += K_int_ * spans.row_bound(nb, 2), f.M4 += K_int_ * spans.row_bound(nb, 4);
+      if (f.side[side] == kModal) f.spread += K_int_ * active.modal_amplitude(nb);
     }
     f.g0 = cheap(c, s, spans, active, f, s.t, false);
     fns_.push_back(f);
@@ -89,9 +78,7 @@ void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans,
     add_stuck(r.lo - 1);
     for (int i = r.lo; i < r.hi; ++i) {
       if (s.dir[i] == 0) continue;
-      // g' = dir a, and the affine path has no acceleration: |g'| <= the order-2 bound.
-      Fn f{i, s.dir[i], {kNone, kNone}, 0, 0, 0, 0, false, false, spans.row_bound(i, 3), spans.row_bound(i, 5), 0,
-           spans.row_bound(i, 2), true, true};
+      Fn f{i, s.dir[i], {kNone, kNone}, 0, 0, 0, 0, false, false, spans.row_bound(i, 3), spans.row_bound(i, 5), 0};
       f.g0 = cheap(c, s, spans, active, f, s.t, false);
       fns_.push_back(f);
     }
@@ -139,15 +126,9 @@ double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans
   const double chord = 0.125 * h * h;
   for (std::size_t k = 0; k < fns_.size(); ++k) {
     Fn& f = fns_[k];
+    f.g1 = cheap(c, s, spans, active, f, s.t + h, true);
     f.d1_known = false;
     root_[k] = kInf;
-    const double floor = f.g0 - f.M1 * h;  // g stays above it over the step
-    if (floor > 0) {
-      f.g1 = floor, f.g1_exact = false;
-      continue;
-    }
-    if (!f.g0_exact) f.g0 = cheap(c, s, spans, active, f, s.t, false), f.g0_exact = true, f.d0_known = false;
-    f.g1 = cheap(c, s, spans, active, f, s.t + h, true), f.g1_exact = true;
     if (f.g1 > 0 && std::min(f.g0, f.g1) - f.M2 * chord > 0) continue;
     if (f.g1 > 0) {
       if (!f.d0_known) f.d0 = cheap(c, s, spans, active, f, s.t, false, true), f.d0_known = true;
@@ -166,7 +147,7 @@ double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans
 }
 
 void SpanScreen::accept() {
-  for (Fn& f : fns_) f.g0 = f.g1, f.g0_exact = f.g1_exact, f.d0 = f.d1, f.d0_known = f.d1_known;
+  for (Fn& f : fns_) f.g0 = f.g1, f.d0 = f.d1, f.d0_known = f.d1_known;
 }
 
 // g over the step as a polynomial in tau = t - s.t: the rows' Taylor polynomials combined as the

@@ -6,10 +6,6 @@
 //                                     the round-off margin of the modal runs, modal_runs.hpp)
 //   stuck block beside a stepped run: g = f_static - |F|  (F its driving force)
 // Each is screened over a step [0, h] in three stages, cheapest first:
-//   * first, with nothing evaluated: g's value (or a lower bound of it) at the start less M1 h,
-//     M1 >= |g'| from the same bounds, positive. A function far from its event is then carried
-//     from step to step by that lower bound alone, and evaluated again only once it may reach
-//     zero;
 //   * two tests that provably pass no root, from g at both ends of the step and bounds on its
 //     derivatives from the rows' (SpanModes::row_bound): the chord, g >= min(g_0, g_h) - M2 h^2 / 8
 //     with M2 >= |g''|; where that fails, the cubic Hermite interpolant of g and g' at the ends,
@@ -64,8 +60,6 @@ class SpanScreen {
     bool d0_known, d1_known;
     double M2, M4;    // bounds on |g''| and |g''''| (of the part that is not a modal bound)
     double spread;    // K_int times a modal neighbour's bound (0 without one)
-    double M1;        // a bound on |g'| of the cheap form over every step until the next rebuild
-    bool g0_exact, g1_exact;  // g0, g1 are the cheap form's values (false: only lower bounds)
   };
   // g's cheap form at the step's start (end = false) or end, and its slope (slope = true).
   double cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active, const Fn& f,

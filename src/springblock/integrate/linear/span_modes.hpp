@@ -17,7 +17,6 @@
 // The state lives in the modes: the blocks' u and v in the chain's State are written only when
 // asked (write), at switches and samples. Every mode's energy q'^2 + omega^2 q^2 never grows, so
 // bounds on a row's derivatives taken at the projection hold until the next one (row_bound).
-#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -79,9 +78,6 @@ class SpanModes {
   // A bound on the order-th derivative of u of block i (order 2 to 5) from the projection on, for
   // the end rows of a run and its sliding blocks.
   double row_bound(int i, int order) const;
-  // A bound on |v| of block i (an end row of a run or a sliding block) from the projection on:
-  // its affine drift, its projection offset and its modes' order-1 bound.
-  double speed_bound(int i) const { return std::fabs(B_[i]) + std::fabs(dv_[i]) + bound_[0][i]; }
   // u of block i about now() as a polynomial in tau: c[j], j = 0 .. kDegree + 1 (exact to
   // round-off for tau <= H: the remainder is below 0.75^(kDegree+2) / (kDegree+2)! of the
   // modes' amplitude).
@@ -138,7 +134,7 @@ class SpanModes {
   std::vector<int> span_of_;              // block -> index in spans_ (-1: none)
   std::vector<double> A_, B_;             // per block: particular solution
   std::vector<double> du_, dv_;           // per block: the projection's round-off (project_one)
-  std::vector<double> bound_[5];          // per block: row_bound of orders 1 to 5 (end and sliding rows)
+  std::vector<double> bound_[4];          // per block: row_bound of orders 2 to 5 (end and sliding rows)
   std::vector<double> q_, p_, qn_, pn_;   // per mode slot (run lo + k): current and step end
   std::vector<double> q0_, p0_, sE_;      // at the projection: modes, sqrt of their energies
   std::vector<double> rhs_;

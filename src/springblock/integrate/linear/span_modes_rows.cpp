@@ -39,20 +39,18 @@ double SpanModes::a(int i, bool end) const {
   return d;
 }
 
-double SpanModes::row_bound(int i, int order) const { return bound_[order - 1][i]; }
+double SpanModes::row_bound(int i, int order) const { return bound_[order - 2][i]; }
 
-// The derivative bounds of row `row` of span sp (orders 1 to 5) from the energies at projection:
-// a mode's |q'| is at most the square root of its energy, the higher orders per shape (c).
+// The derivative bounds of row `row` of span sp (orders 2 to 5) from the energies at projection.
 void SpanModes::set_bounds(const Span& sp, int row) {
   const int n = sp.hi - sp.lo, i = sp.lo + row;
   const double* q = sp.shape->Qr.data() + static_cast<std::size_t>(row) * n;
-  double b[5] = {0, 0, 0, 0, 0};
+  double b[4] = {0, 0, 0, 0};
   for (int k = 0; k < n; ++k) {
     const double w = std::fabs(q[k]) * sE_[sp.lo + k];
-    b[0] += w;
-    for (int j = 0; j < 4; ++j) b[j + 1] += w * sp.shape->c[j][k];
+    for (int j = 0; j < 4; ++j) b[j] += w * sp.shape->c[j][k];
   }
-  for (int j = 0; j < 5; ++j) bound_[j][i] = b[j];
+  for (int j = 0; j < 4; ++j) bound_[j][i] = b[j];
 }
 
 void SpanModes::row_taylor(int i, double* c) const {
