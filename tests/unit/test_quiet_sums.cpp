@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "hand_chain.hpp"
@@ -76,20 +78,34 @@ void sums_from_rows(const sb::Chain& c, const sb::State& s, double& sum_abs, dou
   }
 }
 
-TEST(QuietPhaseSums, EqualTheWrittenRowsForces) {
-  // Pawls of 1 to 3 blocks between grooves of 1 to 4 (a pawl between two grooves borders two
-  // segments), a groove at each chain end, K_int at the paper's scale, damped.
+// Pawls of 1 to 3 blocks between grooves of 1 to 4 (a pawl between two grooves borders two
+// segments), a groove at each chain end, K_int at the paper's scale, damped; at time t, stuck
+// blocks stretched either way (some forces negative: they change sign as the slider advances),
+// grooves displaced and moving (ringing modes).
+struct RingingScene {
+  std::vector<std::uint8_t> contact;
+  sb::Chain c;
+  sb::State s;
+};
+RingingScene ringing_scene(double t) {
   const std::vector<std::uint8_t> contact = {0, 1, 1, 0, 0, 1, 0, 1, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0};
   const int N = static_cast<int>(contact.size());
-  const sb::Chain c = sbtest::hand_chain(contact, 7.3e5, 1e4, std::vector<double>(N, 1e9), std::vector<double>(N, 0.0));
+  sb::Chain c = sbtest::hand_chain(contact, 7.3e5, 1e4, std::vector<double>(N, 1e9), std::vector<double>(N, 0.0));
   sb::State s = sb::State::at_rest(c);
-  s.t = 0.01;
-  // Stuck blocks stretched either way (some forces negative: they change sign as the slider
-  // advances), grooves displaced and moving (ringing modes).
+  s.t = t;
   for (int i = 0; i < N; ++i) {
     s.u[i] = c.v_slider * s.t + 1e-9 * std::sin(0.7 + 1.3 * i);
     s.v[i] = contact[i] ? 0.0 : 0.03 * std::cos(2.0 + i);
   }
+  return {contact, std::move(c), std::move(s)};
+}
+
+TEST(QuietPhaseSums, EqualTheWrittenRowsForces) {
+  const RingingScene sc = ringing_scene(0.01);
+  const std::vector<std::uint8_t>& contact = sc.contact;
+  const sb::Chain& c = sc.c;
+  const sb::State& s = sc.s;
+  const int N = c.N;
   sb::event_detail::QuietPhase q(c);
   const double dt = 1e-5;
   q.set_sample_dt(dt);
@@ -123,16 +139,12 @@ TEST(QuietPhaseSums, WindowSumsEqualTheSamplesSummedOneByOne) {
   // friction_sums added sample by sample; a block in which some force may change sign is
   // refused (and must be one: the scene makes forces change sign), and the sums of a block do not
   // depend on what was sampled before it.
-  const std::vector<std::uint8_t> contact = {0, 1, 1, 0, 0, 1, 0, 1, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0};
-  const int N = static_cast<int>(contact.size());
-  const sb::Chain c = sbtest::hand_chain(contact, 7.3e5, 1e4, std::vector<double>(N, 1e9), std::vector<double>(N, 0.0));
-  sb::State s = sb::State::at_rest(c);
   const double dt = 1e-5;
-  s.t = 1000 * dt;
-  for (int i = 0; i < N; ++i) {
-    s.u[i] = c.v_slider * s.t + 1e-9 * std::sin(0.7 + 1.3 * i);
-    s.v[i] = contact[i] ? 0.0 : 0.03 * std::cos(2.0 + i);
-  }
+  const RingingScene sc = ringing_scene(1000 * dt);
+  const std::vector<std::uint8_t>& contact = sc.contact;
+  const sb::Chain& c = sc.c;
+  const sb::State& s = sc.s;
+  const int N = c.N;
   sb::event_detail::QuietPhase q(c), ref(c);
   for (auto* p : {&q, &ref}) {
     p->set_sample_dt(dt);
@@ -187,20 +199,15 @@ TEST(QuietPhaseSums, WindowSumsEqualTheSamplesSummedOneByOne) {
 
 TEST(QuietPhaseSums, EnvelopeHoldsEverySampleOfItsStretch) {
   // The same scene: bounds on the friction sums over stretches of 16 samples (envelope), from
-  // the modes at the stretch's start or from the phase's start, against friction_sums at every
-  // sample. Every sample must lie within reach of the straight line, and the bounds must be
+  // the modes at the stretch's start, against friction_sums at every sample. Every sample must lie within reach of the straight line, and the bounds must be
   // tight enough to pass over samples (what they are for: a reach as large as the sums
   // themselves would hold trivially); a stretch in which a force may change sign is refused.
-  const std::vector<std::uint8_t> contact = {0, 1, 1, 0, 0, 1, 0, 1, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0};
-  const int N = static_cast<int>(contact.size());
-  const sb::Chain c = sbtest::hand_chain(contact, 7.3e5, 1e4, std::vector<double>(N, 1e9), std::vector<double>(N, 0.0));
-  sb::State s = sb::State::at_rest(c);
   const double dt = 1e-5;
-  s.t = 1000 * dt;
-  for (int i = 0; i < N; ++i) {
-    s.u[i] = c.v_slider * s.t + 1e-9 * std::sin(0.7 + 1.3 * i);
-    s.v[i] = contact[i] ? 0.0 : 0.03 * std::cos(2.0 + i);
-  }
+  const RingingScene sc = ringing_scene(1000 * dt);
+  const std::vector<std::uint8_t>& contact = sc.contact;
+  const sb::Chain& c = sc.c;
+  const sb::State& s = sc.s;
+  const int N = c.N;
   sb::event_detail::QuietPhase q(c);
   q.set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);
