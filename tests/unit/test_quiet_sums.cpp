@@ -199,15 +199,14 @@ TEST(QuietPhaseSums, WindowSumsEqualTheSamplesSummedOneByOne) {
 
 TEST(QuietPhaseSums, EnvelopeHoldsEverySampleOfItsStretch) {
   // The same scene: bounds on the friction sums over stretches of 16 samples (envelope), from
-  // the modes at the stretch's start, against friction_sums at every sample. Every sample must lie within reach of the straight line, and the bounds must be
-  // tight enough to pass over samples (what they are for: a reach as large as the sums
-  // themselves would hold trivially); a stretch in which a force may change sign is refused.
+  // the modes at the stretch's start, against friction_sums at every sample. Every sample must
+  // lie within reach of the straight line, and the bounds must be tight enough to pass over
+  // samples (what they are for: a reach as large as the sums themselves would hold trivially);
+  // a stretch in which a force may change sign is refused.
   const double dt = 1e-5;
   const RingingScene sc = ringing_scene(1000 * dt);
-  const std::vector<std::uint8_t>& contact = sc.contact;
   const sb::Chain& c = sc.c;
   const sb::State& s = sc.s;
-  const int N = c.N;
   sb::event_detail::QuietPhase q(c);
   q.set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);
