@@ -6,6 +6,8 @@
 // underdamped, critical and overdamped modes without dividing by a vanishing frequency.
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <iterator>
 #include <limits>
 
 namespace sb::event_detail {
@@ -36,26 +38,22 @@ inline void taylor_scale(int deg, double* c) {
 // The exact stepper and the searches evaluate modes mostly at such angles (tau up to one step,
 // which turns the fastest mode by less than 1 rad).
 inline void small_sincos(double x, double& sin_x, double& cos_x) {
+  // Inverse factorials, highest term first: sin x = x (1 - y (1/3! - y (1/5! - ...))), cos x =
+  // 1 - y (1/2! - y (1/4! - ...)), y = x^2, each evaluated by Horner's rule in y.
+  static constexpr double kSin[] = {1.0 / 355687428096000.0, 1.0 / 1307674368000.0, 1.0 / 6227020800.0,
+                                    1.0 / 39916800.0,        1.0 / 362880.0,        1.0 / 5040.0,
+                                    1.0 / 120.0,             1.0 / 6.0};
+  static constexpr double kCos[] = {1.0 / 6402373705728000.0, 1.0 / 20922789888000.0, 1.0 / 87178291200.0,
+                                    1.0 / 479001600.0,        1.0 / 3628800.0,        1.0 / 40320.0,
+                                    1.0 / 720.0,              1.0 / 24.0,             0.5};
+  auto horner = [y = x * x](const auto& c) {
+    double acc = c[0];
+    for (std::size_t j = 1; j < std::size(c); ++j) acc = c[j] - y * acc;
+    return acc;
+  };
   const double y = x * x;
-  double sp = 1.0 / 355687428096000.0;  // 1/17!
-  sp = 1.0 / 1307674368000.0 - y * sp;  // 1/15!
-  sp = 1.0 / 6227020800.0 - y * sp;     // 1/13!
-  sp = 1.0 / 39916800.0 - y * sp;       // 1/11!
-  sp = 1.0 / 362880.0 - y * sp;         // 1/9!
-  sp = 1.0 / 5040.0 - y * sp;           // 1/7!
-  sp = 1.0 / 120.0 - y * sp;            // 1/5!
-  sp = 1.0 / 6.0 - y * sp;              // 1/3!
-  sin_x = x - x * y * sp;
-  double cp = 1.0 / 6402373705728000.0;  // 1/18!
-  cp = 1.0 / 20922789888000.0 - y * cp;  // 1/16!
-  cp = 1.0 / 87178291200.0 - y * cp;     // 1/14!
-  cp = 1.0 / 479001600.0 - y * cp;       // 1/12!
-  cp = 1.0 / 3628800.0 - y * cp;         // 1/10!
-  cp = 1.0 / 40320.0 - y * cp;           // 1/8!
-  cp = 1.0 / 720.0 - y * cp;             // 1/6!
-  cp = 1.0 / 24.0 - y * cp;              // 1/4!
-  cp = 0.5 - y * cp;                     // 1/2!
-  cos_x = 1.0 - y * cp;
+  sin_x = x - x * y * horner(kSin);
+  cos_x = 1.0 - y * horner(kCos);
 }
 
 // sin x and cos x for |x| < 1e5: x less the nearest multiple n of pi/2 (Cody-Waite: pi/2 in two

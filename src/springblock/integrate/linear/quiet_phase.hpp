@@ -143,9 +143,6 @@ class QuietPhase {
   void set_dead_times(GrooveRun& s) const;
   // window_sums' and envelope's test (quiet_phase_window.cpp), and an edge's modal reach.
   bool keeps_signs(double tau0, double tau_last, bool need_sums);
-  bool edges_clear(double tau0, double tau_last) const;
-  void evaluate_bounds(double tau0);
-  void add_bounds(const GrooveRun& s, const double* q, const double* p, double* b) const;
   double edge_reach(const Edge& e) const;
   // u, v of segment s at absolute time t from its modal coordinates q, qd.
   void to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "springblock/integrate/linear/envelope.hpp"
 #include "springblock/integrate/linear/quiet_phase.hpp"
 
 namespace sb::event_detail {
@@ -31,52 +32,31 @@ bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
   }
   // Interior forces: none crosses zero inside the stretch.
   if (interior_.crossed(tau_last) != interior_.crossed(tau0)) return false;
-  if (need_sums)
-    for (const GrooveRun& s : segs_)
-      for (int k = 0; k < s.n && tau0 <= s.sample_dead_tau; ++k)
-        if (std::isnan(s.basis->sample_sum[k][0])) return false;  // no closed-form sum for this mode
-  evaluate_bounds(tau0);
-  return edges_clear(tau0, tau_last);
-}
-
-// Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at both
-// ends of the stretch (so everywhere between).
-bool QuietPhase::edges_clear(double tau0, double tau_last) const {
-  for (const Edge& e : edges_) {
-    const double reach = edge_reach(e);
-    const double f0 = e.fa + e.fb * tau0, sg = f0 >= 0 ? 1.0 : -1.0;
-    if (!(sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach)) return false;
-  }
-  return true;
-}
-
-// The live segments' modes at tau0 into wq_, wp_, and end_bound_ from them.
-void QuietPhase::evaluate_bounds(double tau0) {
+  // The live segments' modes at tau0, and bounds on their end rows' modal part from then on.
   for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
     const GrooveRun& s = segs_[sgi];
     end_bound_[2 * sgi] = end_bound_[2 * sgi + 1] = 0.0;
     if (!(tau0 <= s.sample_dead_tau)) continue;
     const RunBasis& d = *s.basis;
+    for (int k = 0; need_sums && k < s.n; ++k)
+      if (std::isnan(d.sample_sum[k][0])) return false;  // no closed-form sum for this mode
     double* q = wq_.data() + s.offset;
     double* p = wp_.data() + s.offset;
     DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau0,
                          [&](int k, const DampedMode& md, double e) {
                            md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau0, e, q[k], p[k]);
                          });
-    add_bounds(s, wq_.data(), wp_.data(), &end_bound_[2 * sgi]);
+    end_bound_[2 * sgi] = row_deviation_bound(d, 0, q, p);
+    end_bound_[2 * sgi + 1] = row_deviation_bound(d, s.n - 1, q, p);
   }
-}
-
-// Bounds on segment s's first and last rows' modal part, added to b[0] and b[1], from its modes
-// at some time (entries s.offset + k of the flat q, p): they hold at every later time.
-void QuietPhase::add_bounds(const GrooveRun& s, const double* q, const double* p, double* b) const {
-  const RunBasis& d = *s.basis;
-  for (int k = 0; k < s.n; ++k) {
-    const int i = s.offset + k;
-    const double amp = std::sqrt((p[i] * p[i] + d.modes[k].omega2 * q[i] * q[i]) / d.modes[k].omega2);
-    b[0] += std::fabs(d.first_row[k]) * amp;
-    b[1] += std::fabs(d.last_row[k]) * amp;
+  // Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at
+  // both ends of the stretch (so everywhere between).
+  for (const Edge& e : edges_) {
+    const double reach = edge_reach(e);
+    const double f0 = e.fa + e.fb * tau0, sg = f0 >= 0 ? 1.0 : -1.0;
+    if (!(sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach)) return false;
   }
+  return true;
 }
 
 double QuietPhase::edge_reach(const Edge& e) const {
@@ -130,7 +110,6 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   }
   return true;
 }
-
 
 // Each sum is affine in tau up to the edges' modal parts, whose sizes edge_reach bounds: with
 // every sign fixed, sum |f| = sum sign(f) f. The sums friction_sums forms round differently from

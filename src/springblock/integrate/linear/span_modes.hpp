@@ -68,9 +68,11 @@ class SpanModes {
   // Row evaluations of block i, which must be in a run: at the current state (end = false) or
   // at the step's end (end = true, time now() + h of the last advance).
   bool holds(int i) const { return span_of_[i] >= 0; }
-  // The run holding block i was projected by the last project(): its rows the screen reads (end
-  // rows and sliding blocks' rows) are then, at now(), exactly the state's u and v (their offsets
-  // make them so, and a + (x - a) rounds to x when a is x's round-off away from it).
+  // The run holding block i was projected by the last project() and has not moved since: its
+  // rows the screen reads (end rows and sliding blocks' rows) are then, at now(), the state's u
+  // and v, which their offsets make them: a + (x - a) is x exactly when a and x are within a
+  // factor 2 (x - a is then exact), and within an ulp of x otherwise (a row crossing zero), so
+  // the screen may read the state instead.
   bool fresh(int i) const { return spans_[span_of_[i]].fresh; }
   double u(int i, bool end) const { return A_[i] + B_[i] * (end ? t_ + h_ : t_) + row_dot(i, end ? qn_.data() : q_.data()) + du_[i]; }
   double v(int i, bool end) const { return B_[i] + row_dot(i, end ? pn_.data() : p_.data()) + dv_[i]; }
