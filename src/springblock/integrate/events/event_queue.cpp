@@ -1,14 +1,34 @@
 #include "springblock/integrate/events/event_queue.hpp"
+
+#include <algorithm>
+#include <cstring>
+
 #include "springblock/integrate/infinity.hpp"
 
 namespace sb::event_detail {
 
+EventQueue::Key EventQueue::key(double t, std::uint32_t tie) {
+  // IEEE order as unsigned integers: flip every bit of a negative double, only the sign bit of
+  // a positive one. Adding 0 first makes -0 into +0, which compares equal to it as a double.
+  t += 0.0;
+  std::uint64_t b;
+  std::memcpy(&b, &t, sizeof b);
+  b = (b >> 63) != 0 ? ~b : b | (std::uint64_t{1} << 63);
+  return (Key(b) << 64) | tie;
+}
+
+EventQueue::Node EventQueue::leaf(int i) const {
+  const bool rc = recheck_[i] != 0;
+  const auto block = static_cast<std::uint32_t>(i);
+  return {key(t_[i], (std::uint32_t{rc} << 31) | block), key(rc ? kInf : t_[i], block)};
+}
+
 EventQueue::EventQueue(int N) : N_(N), t_(N, kInf), recheck_(N, 0), dirty_(N, 0) {
   while (P_ < N_) P_ *= 2;
-  tree_.assign(2 * P_, -1);
-  for (int i = 0; i < N_; ++i) tree_[P_ + i] = i;
-  for (int n = P_ - 1; n >= 1; --n) tree_[n] = earlier(tree_[2 * n + 1], tree_[2 * n]) ? tree_[2 * n + 1] : tree_[2 * n];
-  tree_real_ = tree_;
+  tree_.assign(2 * P_, Node{kEmpty, kEmpty});
+  for (int i = 0; i < N_; ++i) tree_[P_ + i] = leaf(i);
+  for (int n = P_ - 1; n >= 1; --n)
+    tree_[n] = {std::min(tree_[2 * n].all, tree_[2 * n + 1].all), std::min(tree_[2 * n].real, tree_[2 * n + 1].real)};
 }
 
 void EventQueue::set(int i, double t, bool recheck) {
@@ -18,46 +38,42 @@ void EventQueue::set(int i, double t, bool recheck) {
   if (!dirty_[i]) dirty_[i] = 1, dirty_list_.push_back(i);
 }
 
-bool EventQueue::earlier(int a, int b) const {
-  if (a < 0) return false;
-  if (b < 0) return true;
-  if (t_[a] != t_[b]) return t_[a] < t_[b];
-  if (recheck_[a] != recheck_[b]) return recheck_[a] < recheck_[b];
-  return a < b;
-}
-
-bool EventQueue::earlier_real(int a, int b) const {
-  auto t = [&](int i) { return i < 0 || recheck_[i] ? kInf : t_[i]; };
-  if (t(a) != t(b)) return t(a) < t(b);
-  return a >= 0 && (b < 0 || a < b);
-}
-
 void EventQueue::refresh() {
-  // The climb from a changed leaf stops at the first node whose winner, in both trees, is
-  // unchanged and is not block i: no node above it depends on i then. A node whose winner is
-  // another changed block is brought up to date by that block's own climb, which never stops
-  // where its block wins. Every order is total (time, recheck, block), so each node holds the
-  // unique earliest block of its subtree whatever order the climbs take.
+  // A block's leaf takes its new key here, and its climb stops at the first node whose keys do
+  // not change: every node above it already holds the earliest of its subtree. Each climb leaves
+  // the whole tree consistent, so the dirty blocks may climb in any order.
   for (int i : dirty_list_) {
     dirty_[i] = 0;
+    tree_[P_ + i] = leaf(i);
     for (int n = (P_ + i) >> 1; n >= 1; n >>= 1) {
-      const int l = 2 * n, r = 2 * n + 1;
-      const int w = earlier(tree_[r], tree_[l]) ? tree_[r] : tree_[l];
-      const int w_real = earlier_real(tree_real_[r], tree_real_[l]) ? tree_real_[r] : tree_real_[l];
-      if (w == tree_[n] && w_real == tree_real_[n] && w != i && w_real != i) break;
-      tree_[n] = w, tree_real_[n] = w_real;
+      const Node& l = tree_[2 * n];
+      const Node& r = tree_[2 * n + 1];
+      const Node w{std::min(l.all, r.all), std::min(l.real, r.real)};
+      if (w.all == tree_[n].all && w.real == tree_[n].real) break;
+      tree_[n] = w;
     }
   }
   dirty_list_.clear();
-  const int b = tree_[1], e = tree_real_[1];
+  const Node& top = tree_[1];
+  const int b = top.all == kEmpty ? -1 : static_cast<int>(static_cast<std::uint32_t>(top.all) & 0x7fffffffu);
+  const int e = top.real == kEmpty ? -1 : static_cast<int>(static_cast<std::uint32_t>(top.real));
   next_ = (b >= 0 && t_[b] < kInf) ? Next{t_[b], b, recheck_[b] != 0} : Next{kInf, -1, false};
   next_real_ = (e >= 0 && !recheck_[e]) ? t_[e] : kInf;
+}
+
+// The trees' order of blocks a and b (-1: none): time, then a real event first, then the lower.
+bool EventQueue::earlier(int a, int b, const std::vector<double>& t, const std::vector<std::uint8_t>& rc) {
+  if (a < 0) return false;
+  if (b < 0) return true;
+  if (t[a] != t[b]) return t[a] < t[b];
+  if (rc[a] != rc[b]) return rc[a] < rc[b];
+  return a < b;
 }
 
 void EventQueue::offer(int i) {
   const bool rc = recheck_[i] != 0;
   // The trees' order; with no entry yet (block -1, t = inf) only a finite time counts.
-  if (next_.block < 0 ? t_[i] < kInf : earlier(i, next_.block)) next_ = {t_[i], i, rc};
+  if (next_.block < 0 ? t_[i] < kInf : earlier(i, next_.block, t_, recheck_)) next_ = {t_[i], i, rc};
   if (!rc && t_[i] < next_real_) next_real_ = t_[i];
 }
 
