@@ -53,7 +53,7 @@ void EdgeMarch::finish(double H) {
   H_ = H;
   for (auto* v : {&q_, &qd_, &qn_, &qdn_, &qs_, &qds_}) v->resize(modes_.size());
   taylor_ok_ = true;
-  for (const Mode& m : modes_) taylor_ok_ = taylor_ok_ && m.rate * H_ <= 1.0;
+  for (const Mode& m : modes_) taylor_ok_ = taylor_ok_ && m.rate * H_ <= kTaylorReach;
 }
 
 double EdgeMarch::affine_reach(double a, double b, double fs) const {
@@ -74,7 +74,7 @@ void EdgeMarch::finish() {
   }
   for (auto* v : {&q_, &qd_, &qn_, &qdn_, &qs_, &qds_}) v->assign(modes_.size(), 0.0);
   taylor_ok_ = true;
-  for (const Mode& m : modes_) taylor_ok_ = taylor_ok_ && m.rate * H_ <= 1.0;
+  for (const Mode& m : modes_) taylor_ok_ = taylor_ok_ && m.rate * H_ <= kTaylorReach;
 }
 
 void EdgeMarch::direct(const double* q0, const double* p0, double tau, double* q, double* qd) {

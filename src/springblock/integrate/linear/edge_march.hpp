@@ -24,8 +24,9 @@
 //    search, never spans more than one grid step from the point whose modes the march holds, so
 //    F there is a Taylor polynomial about that point: each mode's derivatives follow from the
 //    recurrence q^(j+2) = -gamma q^(j+1) - omega^2 q^(j), and with every mode's fastest rate r
-//    satisfying r H <= 1 the remainder of order kTaylor is below (r H)^(kTaylor+1) / (kTaylor+1)!
-//    ~ 2e-20 of the modal amplitude, under round-off. An evaluation then costs kTaylor flops
+//    satisfying r H <= kTaylorReach (0.52; the grid step gives 0.5) the remainder of order
+//    kTaylor = 14 is below (r H)^(kTaylor+1) / (kTaylor+1)! = 4e-17 of the modal amplitude,
+//    under round-off. An evaluation then costs kTaylor flops
 //    instead of an exp and a sincos per mode. The polynomial's round-off differs from the direct
 //    evaluation's, so its root is confirmed by one direct evaluation: the returned point is
 //    crossed by the closed form itself (and the refinement goes on by direct evaluations in
@@ -85,7 +86,12 @@ class EdgeMarch {
   long direct_evals = 0, grid_steps = 0, local_evals = 0;
 
  private:
-  static constexpr int kTaylor = 20;  // order of the local polynomial (see the header)
+  // Order of the local polynomial and the largest r H it is used at (see the header): the grid
+  // turns the fastest mode by kGrid = 0.5 rad, and 0.52^15 / 15! = 4e-17 is below round-off. It
+  // was order 20 up to r H = 1 (2e-20): six more terms in every evaluation for nothing a double
+  // holds (paper/choices.md).
+  static constexpr int kTaylor = 14;
+  static constexpr double kTaylorReach = 0.52;
   struct Mode {
     double omega, m2;     // sqrt(omega^2), (omega + gamma) for the |q''| bound (the weight: w_)
     double rate;          // largest |eigenvalue| of the mode: omega, or alpha + kappa if overdamped
