@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "springblock/integrate/estrin.hpp"
 #include "springblock/integrate/events/first_root.hpp"
 #include "springblock/integrate/infinity.hpp"
 #include "springblock/integrate/round_off.hpp"
@@ -39,12 +40,6 @@ bool hermite_positive(double g0, double d0, double g1, double d1, double h, doub
     }
   }
   return m - K / 16.0 > 0;
-}
-
-double horner(const double* c, int d, double x) {
-  double p = c[d];
-  for (int j = d - 1; j >= 0; --j) p = p * x + c[j];
-  return p;
 }
 
 }  // namespace
@@ -201,7 +196,7 @@ double SpanScreen::poly_root(const double* g, double t0, double h) const {
   if (g[0] - spread > 1e-10 * (g[0] + spread)) return kInf;
   double lo, hi;
   if (!bern_.first_bracket(g, h, lo, hi)) return kInf;
-  auto p = [&](double x) { return horner(g, D, x); };
+  auto p = [&](double x) { return estrin<D>(g, x); };  // estrin.hpp: latency, not flops
   return first_root(p, lo, p(lo), hi, p(hi), [&](double x) { return time_round_off(t0 + x); });
 }
 

@@ -6,9 +6,9 @@
 // underdamped, critical and overdamped modes without dividing by a vanishing frequency.
 #include <array>
 #include <cmath>
-#include <cstddef>
-#include <iterator>
 #include <limits>
+
+#include "springblock/integrate/estrin.hpp"
 
 namespace sb::event_detail {
 
@@ -38,22 +38,18 @@ inline void taylor_scale(int deg, double* c) {
 // The exact stepper and the searches evaluate modes mostly at such angles (tau up to one step,
 // which turns the fastest mode by less than 1 rad).
 inline void small_sincos(double x, double& sin_x, double& cos_x) {
-  // Inverse factorials, highest term first: sin x = x (1 - y (1/3! - y (1/5! - ...))), cos x =
-  // 1 - y (1/2! - y (1/4! - ...)), y = x^2, each evaluated by Horner's rule in y.
-  static constexpr double kSin[] = {1.0 / 355687428096000.0, 1.0 / 1307674368000.0, 1.0 / 6227020800.0,
-                                    1.0 / 39916800.0,        1.0 / 362880.0,        1.0 / 5040.0,
-                                    1.0 / 120.0,             1.0 / 6.0};
-  static constexpr double kCos[] = {1.0 / 6402373705728000.0, 1.0 / 20922789888000.0, 1.0 / 87178291200.0,
-                                    1.0 / 479001600.0,        1.0 / 3628800.0,        1.0 / 40320.0,
-                                    1.0 / 720.0,              1.0 / 24.0,             0.5};
-  auto horner = [y = x * x](const auto& c) {
-    double acc = c[0];
-    for (std::size_t j = 1; j < std::size(c); ++j) acc = c[j] - y * acc;
-    return acc;
-  };
+  // sin x = x - x y S(y) and cos x = 1 - y C(y), y = x^2, with S(y) = 1/3! - y/5! + y^2/7! - ...
+  // and C(y) = 1/2! - y/4! + y^2/6! - ..., each by Estrin's scheme in y (estrin.hpp): a mode
+  // evaluation's latency is mostly these two polynomials.
+  static constexpr double kS[] = {1.0 / 6.0,          -1.0 / 120.0,           1.0 / 5040.0,
+                                  -1.0 / 362880.0,    1.0 / 39916800.0,       -1.0 / 6227020800.0,
+                                  1.0 / 1307674368000.0, -1.0 / 355687428096000.0};
+  static constexpr double kC[] = {0.5,                   -1.0 / 24.0,          1.0 / 720.0,
+                                  -1.0 / 40320.0,        1.0 / 3628800.0,      -1.0 / 479001600.0,
+                                  1.0 / 87178291200.0,   -1.0 / 20922789888000.0, 1.0 / 6402373705728000.0};
   const double y = x * x;
-  sin_x = x - x * y * horner(kSin);
-  cos_x = 1.0 - y * horner(kCos);
+  sin_x = x - x * y * estrin<7>(kS, y);
+  cos_x = 1.0 - y * estrin<8>(kC, y);
 }
 
 // sin x and cos x for |x| < 1e5: x less the nearest multiple n of pi/2 (Cody-Waite: pi/2 in two

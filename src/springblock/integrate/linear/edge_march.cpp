@@ -105,13 +105,22 @@ void EdgeMarch::grid_step() {
              qd_.data(), qn_.data(), qdn_.data());
 }
 
-double EdgeMarch::force_at(double tau, const double* q) const {
-  // Summed in mode order (not vectorised): F decides brackets, and its last bits are kept.
-  double F = a_ + b_ * tau;
+// The modes' weighted sum, sum_k w_k x_k, in four lanes (mode k in lane k % 4, the lanes added
+// pairwise): one sum in mode order is a chain of dependent additions, and the march takes one
+// at every grid step. F and F' are always summed this way (force_at, gap, expand), so the local
+// polynomial at its base is F there to the last bit.
+double EdgeMarch::weighted(const double* x) const {
   const double* w = w_.data();
-  for (std::size_t k = 0; k < modes_.size(); ++k) F += w[k] * q[k];
-  return F;
+  const int n = static_cast<int>(modes_.size());
+  double d[4] = {};
+  int k = 0;
+  for (; k + 4 <= n; k += 4)
+    for (int l = 0; l < 4; ++l) d[l] += w[k + l] * x[k + l];
+  for (int l = 0; k < n; ++k, ++l) d[l] += w[k] * x[k];
+  return (d[0] + d[1]) + (d[2] + d[3]);
 }
+
+double EdgeMarch::force_at(double tau, const double* q) const { return (a_ + b_ * tau) + weighted(q); }
 
 EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) const {
   Bounds B{0.0, std::fabs(b_), 0.0};

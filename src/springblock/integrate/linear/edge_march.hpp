@@ -106,6 +106,7 @@ class EdgeMarch {
   void direct(const double* q0, const double* p0, double tau) { direct(q0, p0, tau, q_.data(), qd_.data()); }
   void grid_step();                                              // qn_, qdn_ = q_, qd_ advanced by H
   double force_at(double tau, const double* q) const;            // a + b tau + sum w q
+  double weighted(const double* x) const;                        // sum w x (the order of every such sum)
   Bounds bounds(const double* q, const double* qd) const;        // from the modes' energies
   double force(const double* q0, const double* p0, double tau);  // F only, direct (scratch state)
   // The gap fs - measure(F) at tau and its slope, from one direct evaluation (dF is the modes'
@@ -151,6 +152,7 @@ class EdgeMarch {
   bool local_ = false;      // gap() and force() read the Taylor polynomial
   double base_ = 0;         // its point
   double coef_[kTaylor + 1] = {};  // its coefficients, F = sum coef_j (tau - base_)^j
+  double dcoef_[kTaylor] = {};     // F' = sum dcoef_j (tau - base_)^j (both by estrin.hpp)
 };
 
 }  // namespace sb::event_detail
