@@ -4,8 +4,8 @@
 //
 // Regula falsi with the Anderson-Bjorck rule (the value of a bracket end that stays put twice in
 // a row is scaled down, kept_scale, so neither end can stall; it replaced Illinois' halving on
-// 2026-11-26: ~2 % of a run fewer evaluations, paper/choices.md), each point kept half the final
-// width inside the bracket
+// 2026-11-26: 5 % fewer evaluations per root of the exact stepper's screen, paper/choices.md),
+// each point kept half the final width inside the bracket
 // (an estimate good to that closes the bracket from the far side with the next point), and a
 // bisection whenever the bracket has not halved over the last two evaluations. The result has
 // what a bisection's has: g(result) <= 0 (or NaN) within the final width of a point with g > 0.
