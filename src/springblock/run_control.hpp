@@ -14,6 +14,10 @@ Method parse_method(const std::string& text);  // throws InputError("method")
 // Dormand-Prince 5(4) steps under the tolerance (the stepper before the exact one, kept as a
 // reference).
 enum class Stepper { Exact, Dopri5 };
+
+// The exact stepper's longest run (RunControl::exact_max_run, EventDriven's default).
+inline constexpr int kDefaultExactMaxRun = 128;
+
 std::string stepper_name(Stepper s);
 Stepper parse_stepper(const std::string& text);  // throws InputError("stepper")
 
@@ -53,9 +57,10 @@ struct RunControl {
   int modal_max_groove = 32;
   // event method: the stepped runs move by their modes (Stepper::Exact) while none is longer than
   // exact_max_run blocks, and by Dormand-Prince steps otherwise (a run's projection costs O(n^2)
-  // at each switch); Stepper::Dopri5 always steps them. See paper/choices.md (Integration).
+  // at each switch); Stepper::Dopri5 always steps them. See paper/choices.md (Integration): 128
+  // since 2026-11-26 (64 before), by paired wall time over the criterion's four scenes.
   Stepper stepper = Stepper::Exact;
-  int exact_max_run = 64;
+  int exact_max_run = kDefaultExactMaxRun;
   // Run length in units of t0 = (mu_s)_m F_n / (K_s v), the time the slider needs to load an
   // average block to its threshold. Scaling with t0 keeps the number of stick-slip cycles the
   // same when the contact fraction (hence F_n) changes. duration_s > 0 overrides.

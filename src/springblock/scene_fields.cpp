@@ -156,7 +156,7 @@ std::vector<Entry> integration_entries() {
      }},
     {{"stepper", "event method: how sliding runs move: exact (default; by their modes, no step-size error) or dopri5 (Dormand-Prince steps under --tol)", "dopri5"},
      [](Scene& s, auto&, auto& v) { s.run.stepper = parse_stepper(v); }},
-    {{"exact_max_run", "event method, exact stepper: longest run it moves by its modes; longer ones are stepped by Dormand-Prince (default 64)", "64"},
+    {{"exact_max_run", "event method, exact stepper: longest run it moves by its modes; longer ones are stepped by Dormand-Prince (default 128)", "128"},
      [](Scene& s, auto& k, auto& v) {
        const auto n = integer(k, v);
        if (n < 1 || n > 512) throw InputError(k, "exact_max_run = " + v + " is outside [1, 512]");

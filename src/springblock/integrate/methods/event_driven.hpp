@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "springblock/integrate/integrator.hpp"
+#include "springblock/run_control.hpp"
 
 namespace sb {
 
@@ -50,7 +51,6 @@ class EventDriven final : public Integrator {
   // The stepped runs move by their modes (exact) instead of Dormand-Prince steps while none is
   // longer than max_run blocks (only with fast-forward on).
   void set_exact_stepper(bool on, int max_run = kDefaultExactMaxRun) { exact_stepper_ = on, exact_max_run_ = max_run; }
-  static constexpr int kDefaultExactMaxRun = 64;
 
  private:
   double tol_;
