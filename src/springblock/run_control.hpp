@@ -15,7 +15,11 @@ Method parse_method(const std::string& text);  // throws InputError("method")
 // reference).
 enum class Stepper { Exact, Dopri5 };
 
-// The exact stepper's longest run (RunControl::exact_max_run, EventDriven's default).
+// The event method's defaults, shared by RunControl and EventDriven: the longest mobile run and
+// the longest ringing groove-only run propagated by their modes, and the exact stepper's
+// longest run (paper/choices.md, Integration).
+inline constexpr int kDefaultModalMaxRun = 2;
+inline constexpr int kDefaultModalMaxGroove = 64;
 inline constexpr int kDefaultExactMaxRun = 128;
 
 std::string stepper_name(Stepper s);
@@ -49,12 +53,13 @@ struct RunControl {
   double tol = 1e-8;
   // event method: mobile runs of up to this many blocks are propagated exactly by their modes
   // rather than stepped (0: step every run). The default is the measured optimum (bench_methods).
-  int modal_max_run = 2;
+  int modal_max_run = kDefaultModalMaxRun;
   // event method: ringing groove-only runs (no contact block, so no stop to search for; only
   // their stuck neighbours' crossings) of up to this many blocks are propagated by their modes
   // too. Separate from modal_max_run because a groove run has no stop events: it pays off up to
-  // much longer runs (bench_methods, modal_groove/*).
-  int modal_max_groove = 32;
+  // much longer runs (bench_methods, modal_groove/*): 64, the longest allowed, since
+  // 2026-11-26 (32 before; paper/choices.md).
+  int modal_max_groove = kDefaultModalMaxGroove;
   // event method: the stepped runs move by their modes (Stepper::Exact) while none is longer than
   // exact_max_run blocks, and by Dormand-Prince steps otherwise (a run's projection costs O(n^2)
   // at each switch); Stepper::Dopri5 always steps them. See paper/choices.md (Integration): 128

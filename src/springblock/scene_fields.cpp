@@ -148,7 +148,7 @@ std::vector<Entry> integration_entries() {
        if (n < 0 || n > 64) throw InputError(k, "modal_max_run = " + v + " is outside [0, 64]");
        s.run.modal_max_run = static_cast<int>(n);
      }},
-    {{"modal_max_groove", "event method: ringing groove-only runs of up to this many blocks are solved exactly by their modes, not stepped (default 32; 0 steps them)", "32"},
+    {{"modal_max_groove", "event method: ringing groove-only runs of up to this many blocks are solved exactly by their modes, not stepped (default 64; 0 steps them)", "64"},
      [](Scene& s, auto& k, auto& v) {
        const auto n = integer(k, v);
        if (n < 0 || n > 64) throw InputError(k, "modal_max_groove = " + v + " is outside [0, 64]");

@@ -44,10 +44,8 @@ class EventDriven final : public Integrator {
   // Mobile runs up to this many blocks are propagated exactly by their modes instead of being
   // stepped (active_set.hpp, modal_runs.hpp); 0 steps every run. Only with fast-forward on.
   void set_modal_max_run(int n) { modal_max_run_ = n; }
-  static constexpr int kDefaultModalMaxRun = 2;
   // Ringing groove-only runs up to this many blocks are modal too (they have no stops to search).
   void set_modal_max_groove(int n) { modal_max_groove_ = n; }
-  static constexpr int kDefaultModalMaxGroove = 32;
   // The stepped runs move by their modes (exact) instead of Dormand-Prince steps while none is
   // longer than max_run blocks (only with fast-forward on).
   void set_exact_stepper(bool on, int max_run = kDefaultExactMaxRun) { exact_stepper_ = on, exact_max_run_ = max_run; }
