@@ -61,19 +61,11 @@ void EventQueue::refresh() {
   next_real_ = (e >= 0 && !recheck_[e]) ? t_[e] : kInf;
 }
 
-// The trees' order of blocks a and b (-1: none): time, then a real event first, then the lower.
-bool EventQueue::earlier(int a, int b, const std::vector<double>& t, const std::vector<std::uint8_t>& rc) {
-  if (a < 0) return false;
-  if (b < 0) return true;
-  if (t[a] != t[b]) return t[a] < t[b];
-  if (rc[a] != rc[b]) return rc[a] < rc[b];
-  return a < b;
-}
-
 void EventQueue::offer(int i) {
   const bool rc = recheck_[i] != 0;
-  // The trees' order; with no entry yet (block -1, t = inf) only a finite time counts.
-  if (next_.block < 0 ? t_[i] < kInf : earlier(i, next_.block, t_, recheck_)) next_ = {t_[i], i, rc};
+  // The main tree's order (its keys); with no entry yet (block -1, t = inf) only a finite time
+  // counts.
+  if (next_.block < 0 ? t_[i] < kInf : leaf(i).all < leaf(next_.block).all) next_ = {t_[i], i, rc};
   if (!rc && t_[i] < next_real_) next_real_ = t_[i];
 }
 

@@ -9,10 +9,10 @@
 // earliest t, then a real event before a recheck, then the lower block.
 //
 // Each node holds its winner's whole sort key, (t, recheck, block) packed into one 128-bit
-// integer whose order is that order, both trees' keys side by side: a level of a climb is one
-// cache line and two integer minima, with no look-up of the winners' times and no data-dependent
-// branch (the winner is one of two children, which a branch predictor guesses half the time
-// wrong).
+// integer whose order is that order, both trees' keys side by side: a level of a climb reads two
+// adjacent 32-byte nodes and takes two integer minima, with no look-up of the winners' times and
+// no data-dependent branch (the winner is one of two children, which a branch predictor guesses
+// half the time wrong). offer() compares by the same keys, so the order is written once.
 #include <cstdint>
 #include <vector>
 
@@ -51,7 +51,6 @@ class EventQueue {
   // The key of an entry: time, then (main tree) recheck, then block, most significant first.
   static Key key(double t, std::uint32_t tie);
   Node leaf(int i) const;
-  static bool earlier(int a, int b, const std::vector<double>& t, const std::vector<std::uint8_t>& rc);
 
   int N_;
   int P_ = 1;                          // leaves of the trees (a power of two >= N)
