@@ -84,6 +84,20 @@ using Transition = std::array<double, 4>;
 struct DampedMode {
   double alpha = 0;   // gamma / 2 [1/s]
   double omega2 = 0;  // omega^2 [1/s^2]
+  // Derived once here rather than at every evaluation (the sqrt sat on each evaluation's
+  // critical path): s = omega^2 - alpha^2 and, for an underdamped mode, its frequency sqrt(s).
+  // The same expressions as before, so evaluations give the same doubles.
+  double s = 0;       // omega^2 - alpha^2 [1/s^2]: > 0 underdamped, < 0 overdamped
+  double w = 0;       // sqrt(|s|) [1/s]
+  double omega = 0;   // sqrt(omega^2) [1/s] (the searches' grid and bounds)
+
+  DampedMode() = default;
+  DampedMode(double alpha_, double omega2_)
+      : alpha(alpha_), omega2(omega2_), s(omega2_ - alpha_ * alpha_), w(std::sqrt(std::fabs(s))),
+        omega(std::sqrt(omega2_)) {}
+  // The largest |eigenvalue| of q'' + 2 alpha q' + omega^2 q = 0: omega when the mode oscillates
+  // or is critical, alpha + sqrt(alpha^2 - omega^2) when it is overdamped.
+  double fastest_rate() const { return s < 0 ? alpha + w : omega; }
 
   // q and q' at tau >= 0.
   void eval(double q0, double p0, double tau, double& q, double& qd) const {
@@ -94,7 +108,6 @@ struct DampedMode {
   // gives eval's doubles exactly.
   double decay(double tau) const { return std::exp(-alpha * tau); }
   void eval_decayed(double q0, double p0, double tau, double e, double& q, double& qd) const {
-    const double s = omega2 - alpha * alpha;
     const double x = s * tau * tau;
     double eC, eS;  // e^{-alpha tau} C, e^{-alpha tau} S
     if (std::fabs(x) < 1e-5) {
@@ -102,7 +115,7 @@ struct DampedMode {
       eC = e * (1.0 - x / 2.0 + x * x / 24.0);
       eS = e * tau * (1.0 - x / 6.0 + x * x / 120.0);
     } else if (s > 0) {
-      const double w = std::sqrt(s), wt = w * tau;
+      const double wt = w * tau;
       double sin_wt, cos_wt;
       mode_sincos(wt, sin_wt, cos_wt);
       eC = e * cos_wt;
@@ -110,7 +123,7 @@ struct DampedMode {
     } else {
       // Overdamped: the two real exponentials taken separately so that neither overflows;
       // the slow rate kappa - alpha is written as -omega^2 / (alpha + kappa) (no cancellation).
-      const double k = std::sqrt(-s);
+      const double k = w;
       const double slow = std::exp(-omega2 / (alpha + k) * tau), fast = std::exp(-(alpha + k) * tau);
       eC = 0.5 * (slow + fast);
       eS = 0.5 * (slow - fast) / k;

@@ -26,15 +26,6 @@ constexpr int kBounds = 8;
 
 }  // namespace
 
-namespace {
-// The largest |eigenvalue| of q'' + 2 alpha q' + omega^2 q = 0: omega when the mode oscillates or
-// is critical, alpha + sqrt(alpha^2 - omega^2) when it is overdamped.
-double fastest_rate(const DampedMode& m, double omega) {
-  const double s = m.alpha * m.alpha - m.omega2;
-  return s > 0 ? m.alpha + std::sqrt(s) : omega;
-}
-}  // namespace
-
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
   const double P[4] = {0, 0, 0, 0};  // set by finish()
   add_mode(w, mode, index, P);
@@ -43,8 +34,7 @@ void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
 double EdgeMarch::grid_step(double omega_max) { return kGrid / omega_max; }
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const double* P) {
-  const double omega = std::sqrt(mode.omega2);
-  modes_.push_back({omega, omega + 2.0 * mode.alpha, fastest_rate(mode, omega), mode, index});
+  modes_.push_back({mode.omega, mode.omega + 2.0 * mode.alpha, mode.fastest_rate(), mode, index});
   w_.push_back(w);
   p00_.push_back(P[0]), p01_.push_back(P[1]), p10_.push_back(P[2]), p11_.push_back(P[3]);
 }

@@ -35,15 +35,14 @@ inline TransientEnvelope transient_envelope(const RunBasis& b, const double* q0,
   TransientEnvelope e;
   for (int k = 0; k < b.n(); ++k) {
     const DampedMode& m = b.modes[k];
-    const double s = m.omega2 - m.alpha * m.alpha;
-    if (!(m.alpha > 0) || !(s > 0)) return TransientEnvelope{};
-    const double w = std::sqrt(s), P = p0[k] + m.alpha * q0[k];
+    if (!(m.alpha > 0) || !(m.s > 0)) return TransientEnvelope{};
+    const double w = m.w, P = p0[k] + m.alpha * q0[k];
     // sqrt of the sum of squares, not hypot (several times dearer): displacements in m and
     // velocities over rates are far from the squares' overflow and underflow.
     const double Pw = P / w;
     const double C = std::sqrt(q0[k] * q0[k] + Pw * Pw);
     e.u += C;
-    e.v += C * std::sqrt(m.omega2);
+    e.v += C * m.omega;
     e.alpha = m.alpha;
   }
   e.decays = b.n() > 0;
