@@ -517,7 +517,8 @@ def cost_model_blocks(path):
     B.append(("p", f"Wall time of one repetition fitted on the calibration scenes ({f['form']} form, commit "
                    f"{m['commit']}, {m['date']}, {m['cores']} cores): {terms}. Validation: {v['within']} of "
                    f"{v['of']} scenes within a factor of {v['factor']:g} (needed {v['needed']}): "
-                   f"**{'met' if v['met'] else 'not met'}**. The floor is the Dormand-Prince stepping (stepping_s)."))
+                   f"**{'met' if v['met'] else 'not met'}**. The floor is the stepping that moves the slips (stepping_s: the exact stepper's projections and "
+                   f"mode transitions, or Dormand-Prince steps of runs longer than exact_max_run)."))
     rows = [[s["name"], s["set"], f"{s['counts']['slip_events']:.0f}", f"{s['counts']['slip_starts']:.0f}",
              f"{1e3 * s['measured_s']:.1f}", f"{1e3 * s['predicted_s']:.1f}",
              f"{s['ratio']:.2f}" if s["ratio"] is not None else "-", "yes" if s["within"] else "no",
