@@ -34,7 +34,7 @@ void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
 double EdgeMarch::grid_step(double omega_max) { return kGrid / omega_max; }
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const double* P) {
-  modes_.push_back({mode.omega, mode.omega + 2.0 * mode.alpha, mode.fastest_rate(), mode, index});
+  modes_.push_back({mode.omega + 2.0 * mode.alpha, mode.fastest_rate(), mode, index});
   w_.push_back(w);
   p00_.push_back(P[0]), p01_.push_back(P[1]), p10_.push_back(P[2]), p11_.push_back(P[3]);
 }
@@ -56,7 +56,7 @@ double EdgeMarch::affine_reach(double a, double b, double fs) const {
 
 void EdgeMarch::finish() {
   double omega_max = 0;
-  for (const Mode& m : modes_) omega_max = std::max(omega_max, m.omega);
+  for (const Mode& m : modes_) omega_max = std::max(omega_max, m.mode.omega);
   H_ = kGrid / omega_max;
   for (std::size_t k = 0; k < modes_.size(); ++k) {
     modes_[k].mode.eval(1.0, 0.0, H_, p00_[k], p10_[k]);
@@ -117,9 +117,9 @@ EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) const {
   for (std::size_t k = 0; k < modes_.size(); ++k) {
     const Mode& m = modes_[k];
     // Energy bounds |qd| <= E, |q| <= E / omega, |q''| = |gamma qd + omega^2 q| <= (gamma + omega) E.
-    const double E = std::fabs(w_[k]) * std::sqrt(qd[k] * qd[k] + m.omega * m.omega * q[k] * q[k]);
+    const double E = std::fabs(w_[k]) * std::sqrt(qd[k] * qd[k] + m.mode.omega * m.mode.omega * q[k] * q[k]);
     B.sb += E;
-    B.mb += E / m.omega;
+    B.mb += E / m.mode.omega;
     B.m2 += m.m2 * E;
   }
   return B;

@@ -93,9 +93,9 @@ class EdgeMarch {
   static constexpr int kTaylor = 14;
   static constexpr double kTaylorReach = 0.52;
   struct Mode {
-    double omega, m2;     // sqrt(omega^2), (omega + gamma) for the |q''| bound (the weight: w_)
+    double m2;            // omega + gamma, for the |q''| bound (the weight: w_)
     double rate;          // largest |eigenvalue| of the mode: omega, or alpha + kappa if overdamped
-    DampedMode mode;
+    DampedMode mode;      // its omega is the bounds' and the grid's
     int index;
   };
   struct Bounds {
