@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <string>
 
 #include "springblock/units.hpp"
 
@@ -142,13 +143,15 @@ std::vector<Entry> integration_entries() {
      [](Scene& s, auto& k, auto& v) { s.run.dt_s = parse_quantity(v, Dimension::Time, k); }},
     {{"tol", "event method relative tolerance (default 1e-8)", "1e-8"},
      [](Scene& s, auto& k, auto& v) { s.run.tol = number(k, v); }},
-    {{"modal_max_run", "event method: mobile runs of up to this many blocks are solved exactly by their modes, not stepped (default 2; 0 steps all)", "2"},
+    {{"modal_max_run", "event method: mobile runs of up to this many blocks are solved exactly by their modes, not stepped (default " +
+          std::to_string(kDefaultModalMaxRun) + "; 0 steps all)", std::to_string(kDefaultModalMaxRun)},
      [](Scene& s, auto& k, auto& v) {
        const auto n = integer(k, v);
        if (n < 0 || n > 64) throw InputError(k, "modal_max_run = " + v + " is outside [0, 64]");
        s.run.modal_max_run = static_cast<int>(n);
      }},
-    {{"modal_max_groove", "event method: ringing groove-only runs of up to this many blocks are solved exactly by their modes, not stepped (default 64; 0 steps them)", "64"},
+    {{"modal_max_groove", "event method: ringing groove-only runs of up to this many blocks are solved exactly by their modes, not stepped (default " +
+          std::to_string(kDefaultModalMaxGroove) + "; 0 steps them)", std::to_string(kDefaultModalMaxGroove)},
      [](Scene& s, auto& k, auto& v) {
        const auto n = integer(k, v);
        if (n < 0 || n > 64) throw InputError(k, "modal_max_groove = " + v + " is outside [0, 64]");
@@ -156,7 +159,8 @@ std::vector<Entry> integration_entries() {
      }},
     {{"stepper", "event method: how sliding runs move: exact (default; by their modes, no step-size error) or dopri5 (Dormand-Prince steps under --tol)", "dopri5"},
      [](Scene& s, auto&, auto& v) { s.run.stepper = parse_stepper(v); }},
-    {{"exact_max_run", "event method, exact stepper: longest run it moves by its modes; longer ones are stepped by Dormand-Prince (default 128)", "128"},
+    {{"exact_max_run", "event method, exact stepper: longest run it moves by its modes; longer ones are stepped by Dormand-Prince (default " +
+          std::to_string(kDefaultExactMaxRun) + ")", std::to_string(kDefaultExactMaxRun)},
      [](Scene& s, auto& k, auto& v) {
        const auto n = integer(k, v);
        if (n < 1 || n > 512) throw InputError(k, "exact_max_run = " + v + " is outside [1, 512]");

@@ -76,11 +76,15 @@ long FanOut::sample_sums(const Chain& c, const State& s, long k0, double dt, lon
   for (auto& v : views_) {
     if (v.obs->wants_stop()) continue;
     const long long hi = end_index(v, k0, k_stop, dt), lo = std::max<long long>(k0, v.next_k);
+    // The block as a run of its own would offer it: to its end, or cut at the view's end (the
+    // integrator's blocks end there too in such a run). Served one by one instead, a view's
+    // last partial block summed differently from its own run's closed form and agreed with it
+    // only while the difference rounded away (SharedTrajectory.*LongGrooves*).
     long long reached = lo;
-    if (lo == k0 && hi == k_stop && v.obs->sample_sums(c, s, k0, dt, n, stretch) == n) {
-      v.next_k = k_stop;
+    if (lo == k0 && hi > lo && v.obs->sample_sums(c, s, k0, dt, static_cast<long>(hi - k0), stretch) == hi - k0) {
+      v.next_k = hi;
       record(v, s);
-      reached = k_stop;
+      reached = hi;
     }
     // Past its end inside the block a view needs nothing more from it, unless its next sample
     // (one exactly at its end) is inside: that one it takes from sample().

@@ -94,7 +94,7 @@ const SpanModes::Shape& SpanModes::shape(int n, bool left, bool right) {
     // |q'| <= sqrt(E), |q''| <= (gamma + omega) sqrt(E), |q'''| <= (gamma (gamma + omega) + omega^2)
     // sqrt(E), from q'' = -gamma q' - omega^2 q and omega |q| <= sqrt(E).
     // and q^(j+2) = -gamma q^(j+1) - omega^2 q^(j) for the higher ones.
-    const double w = std::sqrt(m.omega2), c2 = gamma_ + w, c3 = gamma_ * c2 + m.omega2;
+    const double w = m.omega, c2 = gamma_ + w, c3 = gamma_ * c2 + m.omega2;
     const double c4 = gamma_ * c3 + m.omega2 * c2, c5 = gamma_ * c4 + m.omega2 * c3;
     sh.w2.push_back(m.omega2);
     sh.c[0].push_back(c2), sh.c[1].push_back(c3), sh.c[2].push_back(c4), sh.c[3].push_back(c5);

@@ -137,20 +137,9 @@ void EventRun::took_samples(long used, bool& stopped) {
 bool EventRun::offer_block(double t_stop, bool& stopped, long long& next_offer) {
   const long long k0 = clock_.index();
   const long block = QuietPhase::kSampleBlock;
-  const long long k_block = (k0 / block + 1) * block, k_stop = clock_.first_at_or_after(t_stop);
-  const long long k_end = std::min(k_block, k_stop);
+  const long long k_end = std::min((k0 / block + 1) * block, clock_.first_at_or_after(t_stop));
   const long n = static_cast<long>(k_end - k0);
   if (n <= 0) return false;
-  // A block cut short by the run's end is served one by one. A trajectory shared by several
-  // run lengths (FanOut) runs on past a shorter view's end, so its block there ends at the
-  // multiple of kSampleBlock, and that view, which ends inside it, takes those samples one by
-  // one; its run of its own must too, or the two sum them differently (closed form against one
-  // by one) and may differ in the last bit (test SharedTrajectory.*LongGrooves*). Events cut
-  // both alike and need no such care.
-  if (k_stop < k_block && !(t_stop < t_end_)) {
-    next_offer = k_end;
-    return false;
-  }
   const double dt = clock_.dt();
   long long cursor = k0 - 1;  // the last sample advance_sample was brought to in this stretch
   bool summed = false;

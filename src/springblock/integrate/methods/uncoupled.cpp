@@ -21,10 +21,10 @@ constexpr double kPi = std::numbers::pi;
 // (infinity if none). Underdamped: q = e^{-alpha tau} R cos(w tau - phi), zeros every pi / w.
 // Critical and overdamped: at most one zero, from q0 + P tau = 0 or tanh(k tau) = -q0 k / P.
 double next_zero(const DampedMode& m, double q0, double p0, double from) {
-  const double a = m.alpha, s = m.omega2 - a * a, P = p0 + a * q0;
+  const double a = m.alpha, s = m.s, P = p0 + a * q0;
   if (q0 == 0.0 && P == 0.0) return kInf;
   if (s > 0) {
-    const double w = std::sqrt(s);
+    const double w = m.w;
     const double phi = std::atan2(P / w, q0);
     const double k = std::ceil((w * from - phi - 0.5 * kPi) / kPi);
     double tau = (phi + 0.5 * kPi + k * kPi) / w;
@@ -36,7 +36,7 @@ double next_zero(const DampedMode& m, double q0, double p0, double from) {
   if (s == 0) {
     tau = -q0 / P;
   } else {
-    const double k = std::sqrt(-s), r = -q0 * k / P;
+    const double k = m.w, r = -q0 * k / P;
     if (!(r > -1.0 && r < 1.0)) return kInf;
     tau = std::atanh(r) / k;
   }
