@@ -52,7 +52,9 @@ struct RunControl {
   // at 1e-7 (paper/choices.md, Integration).
   double tol = 1e-8;
   // event method: mobile runs of up to this many blocks are propagated exactly by their modes
-  // rather than stepped (0: step every run). The default is the measured optimum (bench_methods).
+  // rather than stepped once they have moved for two periods of the chain's fastest mode with
+  // nothing in or beside them switching (ActiveSet::promote_runs; 0: step every run). The
+  // default is the measured optimum (bench_methods, paper/choices.md).
   int modal_max_run = kDefaultModalMaxRun;
   // event method: ringing groove-only runs (no contact block, so no stop to search for; only
   // their stuck neighbours' crossings) of up to this many blocks are propagated by their modes

@@ -143,7 +143,7 @@ std::vector<Entry> integration_entries() {
      [](Scene& s, auto& k, auto& v) { s.run.dt_s = parse_quantity(v, Dimension::Time, k); }},
     {{"tol", "event method relative tolerance (default 1e-8)", "1e-8"},
      [](Scene& s, auto& k, auto& v) { s.run.tol = number(k, v); }},
-    {{"modal_max_run", "event method: mobile runs of up to this many blocks are solved exactly by their modes, not stepped (default " +
+    {{"modal_max_run", "event method: mobile runs of up to this many blocks that keep moving are solved exactly by their modes, not stepped (default " +
           std::to_string(kDefaultModalMaxRun) + "; 0 steps all)", std::to_string(kDefaultModalMaxRun)},
      [](Scene& s, auto& k, auto& v) {
        const auto n = integer(k, v);

@@ -8,6 +8,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "hand_chain.hpp"
@@ -167,6 +169,47 @@ TEST(ActiveSet, RingingGrooveRetiresOnceItsTransientIsBelowTolerance) {
   EXPECT_TRUE(a.stepped().empty());
   // The stuck blocks beside it now have closed-form crossings.
   EXPECT_GE(a.next_crossing().block, 0);
+}
+
+TEST(ActiveSet, ShortRunsAreSteppedUntilTheyOutlastASlip) {
+  // A sliding block alone between stuck neighbours is stepped when its run forms, and becomes
+  // modal (its stop and its neighbours' crossings searched on its modes) only once it has slid
+  // for promote_age() with nothing in or beside it switching; a switch beside it reshapes the
+  // run, which is stepped again and ages afresh.
+  const sb::Chain c = grooved(1e4);
+  sb::State s = sb::State::at_rest(c);
+  s.t = 0.01;
+  settle_grooves(c, s);
+  s.dir[1] = 1;  // block 1 slides between stuck pawls 0 and 2
+  s.v[1] = 0.1 * c.v_slider;
+  ActiveSet a(c, true, kAtolU, kAtolV, 2, 64, 1.0);
+  a.rebuild(c, s);
+  EXPECT_EQ(a.kind(1), ActiveSet::kStepped);
+  EXPECT_EQ(a.watched(), (std::vector<int>{0, 1, 2}));
+  const double due = s.t + a.promote_age();
+  EXPECT_EQ(a.next_promotion(), due);
+  // Two periods of the fastest mode, sqrt((K_s + 4 K_int) / m).
+  EXPECT_NEAR(a.promote_age(), 4 * M_PI / std::sqrt((c.K_s + 4 * c.K_int) / c.m), 1e-15 * a.promote_age());
+  s.t = std::nextafter(due, 0.0);
+  EXPECT_FALSE(a.promote_runs(c, s));
+  EXPECT_EQ(a.kind(1), ActiveSet::kStepped);
+  s.t = due;
+  EXPECT_TRUE(a.promote_runs(c, s));
+  EXPECT_EQ(a.kind(1), ActiveSet::kModal);
+  EXPECT_TRUE(a.stepped().empty());
+  EXPECT_TRUE(a.watched().empty());
+  EXPECT_EQ(a.next_promotion(), std::numeric_limits<double>::infinity());
+  // Its events are now searched on its modes: the next one is in the future.
+  EXPECT_GT(a.next_crossing().t, s.t);
+  // Block 0 starts to slide beside it: the run {0, 1} is new, so it is stepped and ages afresh.
+  s.dir[0] = 1;
+  std::vector<std::uint8_t> touched(c.N, 0);
+  touched[0] = 1;
+  a.materialise(s.t, s.u.data(), s.v.data());
+  a.update(c, s, touched.data(), {0});
+  EXPECT_EQ(a.kind(0), ActiveSet::kStepped);
+  EXPECT_EQ(a.kind(1), ActiveSet::kStepped);
+  EXPECT_EQ(a.next_promotion(), s.t + a.promote_age());
 }
 
 }  // namespace

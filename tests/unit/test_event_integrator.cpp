@@ -391,7 +391,10 @@ TEST(EventIntegrator, SummedSampleBlocksEqualTheSamplesOneByOne) {
   // (QuietPhase::envelope), looking only at the samples that may hold the peak. After loading, blocks of quiet-phase samples reach the mu_d window as closed-form sums over
   // the modes (QuietPhase::window_sums). Against the same run serving them one by one: the same
   // switching history (samples never act on the dynamics), mu_s and the window count exactly,
-  // mu_d to round-off (the sums of up to 64 samples rounded differently; measured 1e-16).
+  // mu_d to round-off: the sums of up to 64 samples are rounded differently. Measured on ten
+  // seeds of this scene, before and after short runs were first stepped (paper/choices.md):
+  // up to 1.5e-14 relative (1.1e-14 for the signed sum), so the bound is 1e-13; a sample
+  // dropped or counted twice moves mu_d by (mu - mu_d) / window_samples, far above that.
   PairedRuns p;
   sb::FrictionObserver summed(p.cfg), single(p.cfg);
   OneByOne one(single);
@@ -413,8 +416,8 @@ TEST(EventIntegrator, SummedSampleBlocksEqualTheSamplesOneByOne) {
   EXPECT_EQ(summed.t_peak(), single.t_peak());
   EXPECT_EQ(summed.mu_s_signed(), single.mu_s_signed());
   EXPECT_EQ(summed.window_samples(), single.window_samples());
-  EXPECT_NEAR(summed.mu_d(), single.mu_d(), 1e-14 * single.mu_d());
-  EXPECT_NEAR(summed.mu_d_signed(), single.mu_d_signed(), 1e-14 * std::fabs(single.mu_d_signed()));
+  EXPECT_NEAR(summed.mu_d(), single.mu_d(), 1e-13 * single.mu_d());
+  EXPECT_NEAR(summed.mu_d_signed(), single.mu_d_signed(), 1e-13 * std::fabs(single.mu_d_signed()));
 }
 
 TEST(EventIntegrator, CreepingBlocksInModalRunsDoNotStutter) {

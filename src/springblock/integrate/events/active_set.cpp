@@ -29,6 +29,7 @@ ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double 
       settle_grooves_(settle_grooves),
       modal_max_(settle_grooves && c.K_int > 0 ? modal_max_run : 0),
       modal_max_groove_(settle_grooves && c.K_int > 0 ? modal_max_groove : 0),
+      promote_age_(4.0 * M_PI / std::sqrt((c.K_s + 4.0 * c.K_int) / c.m)),
       t_end_(t_end),
       modal_(c),
       dir_prev_(c.N, 0),
@@ -88,7 +89,7 @@ void ActiveSet::find_runs(const Chain& c, const State& s, int lo, int hi, std::v
         ++j;
         grooves = grooves && !contact[j];
       }
-    out.push_back(Run{{i, j + 1}, kStepped, grooves});
+    out.push_back(Run{{i, j + 1}, kStepped, grooves, s.t});
     i = j + 1;
   }
 }
@@ -126,7 +127,8 @@ ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uin
     paths_.compute(s, r.span);
     if (settled_now(s, r.span)) return kSettled;
   }
-  return r.span.hi - r.span.lo <= (r.grooves ? modal_max_groove_ : modal_max_) ? kModal : kStepped;
+  // A run holding a contact block starts stepped; promote_runs() makes it modal if it lasts.
+  return r.grooves && r.span.hi - r.span.lo <= modal_max_groove_ ? kModal : kStepped;
 }
 
 // A run that becomes modal is projected afresh at s.t. (One that stays modal with nothing in or
@@ -154,10 +156,12 @@ void ActiveSet::list_stepped(const State& s) {
   stepped_.clear();
   watched_.clear();
   ringing_.clear();
+  next_promotion_ = kInf;
   for (std::size_t k = 0; k < runs_.size(); ++k) {
     const Run& r = runs_[k];
     if (r.kind != kStepped) continue;
     if (r.grooves) ringing_.push_back(static_cast<int>(k));
+    else if (r.span.hi - r.span.lo <= modal_max_) next_promotion_ = std::min(next_promotion_, r.formed + promote_age_);
     stepped_.push_back(r.span);
     // In block order; a stuck block between two stepped runs is listed once.
     if (K_int_ > 0 && r.span.lo > 0 && (watched_.empty() || watched_.back() != r.span.lo - 1))

@@ -15,6 +15,12 @@
 //              by its modes with no time step (modal_runs.hpp), its stops and its stuck
 //              neighbours' crossings found by EdgeMarch. A creeping block (mu_d clipped to
 //              mu_s) that never stops then costs nothing between its neighbours' switches.
+//              A short run holding a contact block becomes modal only once it has moved for
+//              promote_age() with nothing in or beside it switching (promote_runs): most
+//              slips of one or two blocks end sooner, and a few steps of the stepper cost less
+//              than the modal searches (the stop and both neighbours' crossings, each marched
+//              up to the next event) that every switch beside such a run would renew. What
+//              outlasts that age is creeping, which the modal searches skip over.
 // A stuck block with no stepped or modal neighbour feels an affine force a + b t, so its
 // threshold crossing is closed form; one beside a modal run (and no stepped one) has an exact
 // crossing from the modes; only stuck blocks next to a stepped run need the step's dense output.
@@ -97,6 +103,16 @@ class ActiveSet {
   // After an accepted step at s.t: ringing runs whose transient has died become settled and
   // leave the stepped set. Returns true when the stepped set changed.
   bool retire_settled(const Chain& c, const State& s);
+  // Stepped runs of at most modal_max_run blocks holding a contact block, formed at least
+  // promote_age() before s.t, become modal (projected from s.u, s.v, which must hold their state
+  // at s.t), and the events of their blocks and stuck neighbours are searched. Returns true when
+  // the stepped set changed. The earliest time one is due (+inf if none): next_promotion().
+  bool promote_runs(const Chain& c, const State& s);
+  double next_promotion() const { return next_promotion_; }
+  // Two periods of the chain's fastest mode, 4 pi / sqrt((K_s + 4 K_int) / m): twice the
+  // longest slip a run of one or two blocks makes undisturbed (half a period of its slowest
+  // mode, at most one period of the fastest). Fixed before it was measured (paper/choices.md).
+  double promote_age() const { return promote_age_; }
 
   // The earliest closed-form or modal event; with recheck set it is not an event: a modal
   // search was cut off there, call recheck() at its time.
@@ -110,6 +126,7 @@ class ActiveSet {
     BlockRange span;
     Kind kind;       // kStepped (active or ringing), kSettled or kModal
     bool grooves;    // grooves only (never holds a contact block)
+    double formed;   // when it was found: nothing in or beside it has switched since
   };
   bool settled_now(const State& s, BlockRange r) const;
   // The maximal runs of mobile blocks in [lo, hi) (whose borders are stuck or the chain's ends),
@@ -157,6 +174,8 @@ class ActiveSet {
   bool settle_grooves_;
   int modal_max_;         // longest modal run holding a contact block
   int modal_max_groove_;  // longest modal grooves-only run
+  double promote_age_;    // promote_age()
+  double next_promotion_ = std::numeric_limits<double>::infinity();  // list_stepped
   double t_end_;
   ModalRuns modal_;
   // s.dir and kind_ at the previous classification. Between classifications they equal s.dir and

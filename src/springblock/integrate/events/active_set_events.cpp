@@ -148,4 +148,25 @@ bool ActiveSet::retire_settled(const Chain& c, const State& s) {
   return true;
 }
 
+bool ActiveSet::promote_runs(const Chain& c, const State& s) {
+  if (!(s.t >= next_promotion_)) return false;
+  bool changed = false;
+  for (Run& r : runs_) {
+    if (r.kind != kStepped || r.grooves || r.span.hi - r.span.lo > modal_max_ || s.t < r.formed + promote_age_)
+      continue;
+    // As a classification would treat a run that becomes modal: projected afresh (fresh_), its
+    // sliding blocks' stops and its stuck neighbours' crossings searched anew.
+    assign(c, s, r, kModal);
+    std::fill(kind_prev_.begin() + r.span.lo, kind_prev_.begin() + r.span.hi, kModal);
+    changed = true;
+    for (int i = r.span.lo; i < r.span.hi; ++i)
+      if (c.contact[i] && s.dir[i] != 0) events_.set(i, kInf, false), pending_.push_back(i);
+    for (int i : {r.span.lo - 1, r.span.hi})
+      if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && !refresh_stuck(c, s, i)) pending_.push_back(i);
+  }
+  list_stepped(s);
+  finish_events(c, s);
+  return changed;
+}
+
 }  // namespace sb::event_detail

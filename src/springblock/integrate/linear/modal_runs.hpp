@@ -14,7 +14,8 @@
 //     f_static; F is affine plus the modes of the one or two runs it borders.
 // For a run of n blocks a switch costs O(n^2) (projection) plus the event searches, against a
 // Dormand-Prince step every ~0.1/omega_max while it moves; the active set uses this only up to
-// a run length set by the caller, where it is cheaper (measured in bench_methods).
+// a run length set by the caller, where it is cheaper (measured in bench_methods), and for a
+// run holding a contact block only once it has outlasted a short slip (ActiveSet::promote_runs).
 //
 // A run none of whose blocks nor stuck neighbours switched keeps its modal coordinates and its
 // event times across switches elsewhere: a switch costs only the runs it touches.

@@ -5,8 +5,9 @@
 //    stepped (active_set.hpp: runs holding a sliding block, and grooves still ringing; settled
 //    grooves are affine in t and stuck blocks with no stepped neighbour have closed-form
 //    threshold times, which end the step exactly when they are due; runs of at most
-//    modal_max_run blocks, and grooves-only runs of at most modal_max_groove, are propagated
-//    exactly by their modes and take no step at all, see modal_runs.hpp; with nothing left to
+//    modal_max_run blocks that keep moving, and grooves-only runs of at most modal_max_groove,
+//    are propagated exactly by their modes and take no step at all, see modal_runs.hpp and
+//    ActiveSet::promote_runs; with nothing left to
 //    step the loop jumps from event to event). Dormand-Prince 5(4) with error control
 //    (rtol = tol, atol = tol times the natural scales F_n/K_s and omega_s F_n/K_s). A switch
 //    brings only the exact runs it reads to its time (ActiveSet::materialise_near). After each

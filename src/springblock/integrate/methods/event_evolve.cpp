@@ -91,8 +91,11 @@ void EventRun::evolve_stepped() {
   } else {
     // Ringing grooves whose transient has died leave the stepped set (stage 1 of the others
     // stays valid: nothing switched).
-    WorkTimer timer(s_.work, s_.work.switching_s);
-    active_.retire_settled(c_, s_);
+    {
+      WorkTimer timer(s_.work, s_.work.switching_s);
+      active_.retire_settled(c_, s_);
+    }
+    promote_runs();
   }
   sample_if_due();
 }

@@ -126,6 +126,7 @@ void EventRun::evolve_exact() {
     switch_now();
   } else {
     retire_spans();
+    promote_runs();
   }
   sample_if_due();
 }

@@ -76,6 +76,18 @@ void EventRun::switch_now() {
   reclassify();
 }
 
+void EventRun::promote_runs() {
+  if (!(s_.t >= active_.next_promotion())) return;
+  WorkTimer timer(s_.work, s_.work.switching_s);
+  // The promoted runs are projected from the state: the exact stepper writes its runs first (the
+  // others are kept by the next projection: nothing beside them switched).
+  if (spans_ && spans_valid_) write_spans(false);
+  if (!active_.promote_runs(c_, s_)) return;
+  dp_.set_frozen(s_.u.data(), active_.stepped());
+  spans_valid_ = false;
+  stage1_valid_ = false;
+}
+
 void EventRun::take_step_end(const std::vector<BlockRange>& spans) {
   for (const auto& sp : spans) {
     std::copy(dp_.u1() + sp.lo, dp_.u1() + sp.hi, s_.u.begin() + sp.lo);

@@ -72,6 +72,9 @@ class EventRun {
   void write_for_switch();
   // After a step: grooves-only runs whose modes have rung down leave the stepped set.
   void retire_spans();
+  // After a step that switched nothing: short runs that have moved long enough become modal
+  // (ActiveSet::promote_runs), from the state at s.t.
+  void promote_runs();
   // The step layer: one Dormand-Prince trial of size h from s.t; returns its error (units of
   // the tolerance).
   template <bool Coupled, bool Damped>
