@@ -197,7 +197,10 @@ double SpanScreen::poly_root(const double* g, double t0, double h) const {
   double lo, hi;
   if (!bern_.first_bracket(g, h, lo, hi)) return kInf;
   auto p = [&](double x) { return estrin<D>(g, x); };  // estrin.hpp: latency, not flops
-  return first_root(p, lo, p(lo), hi, p(hi), [&](double x) { return time_round_off(t0 + x); });
+  // At the step's start the polynomial is g_0, as its evaluation there would give (every term
+  // but the first vanishes; only the sign of a zero could differ, which no comparison sees).
+  const double p_lo = lo == 0.0 && std::isfinite(g[0] + spread) ? g[0] : p(lo);
+  return first_root(p, lo, p_lo, hi, p(hi), [&](double x) { return time_round_off(t0 + x); });
 }
 
 }  // namespace sb::event_detail
