@@ -2,6 +2,7 @@
 // The spring-block chain as a dynamical system (the "system" in odeint's vocabulary):
 // stiffnesses, mass, per-block friction thresholds and the forces they produce.
 // It knows nothing about time stepping or observation.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct Chain {
   int n_contact = 0;
 
   Effects effects() const { return {K_int > 0, gamma > 0, n_contact < N}; }
+  // sqrt((K_s + 4 K_int) / m): every run's modes are slower (its stiffness matrix's rows sum to
+  // at most K_s + 4 K_int by Gershgorin). The steppers' and searches' time scale.
+  double omega_max() const { return std::sqrt((K_s + 4.0 * K_int) / m); }
 
   // Net non-friction force on block i (slider spring + internal springs + damping) at time t.
   // Free chain ends: the end blocks have one neighbour.

@@ -29,7 +29,7 @@ ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double 
       settle_grooves_(settle_grooves),
       modal_max_(settle_grooves && c.K_int > 0 ? modal_max_run : 0),
       modal_max_groove_(settle_grooves && c.K_int > 0 ? modal_max_groove : 0),
-      promote_age_(4.0 * M_PI / std::sqrt((c.K_s + 4.0 * c.K_int) / c.m)),
+      promote_age_(4.0 * M_PI / c.omega_max()),
       t_end_(t_end),
       modal_(c),
       dir_prev_(c.N, 0),

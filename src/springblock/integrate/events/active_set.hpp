@@ -157,6 +157,9 @@ class ActiveSet {
   bool untouched(const State& s, const std::uint8_t* touched, BlockRange r) const;
   // Fill stepped_ and watched_ from runs_.
   void list_stepped(const State& s);
+  // After run r changed kind with time (settled, or promoted to modal): its stuck contact
+  // borders without an event time get one, closed form or queued for a modal search (pending_).
+  void renew_borders(const Chain& c, const State& s, BlockRange r);
   // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
   void update_crossing(const Chain& c, const State& s, int i);
   // The event time of stuck block i when it needs no modal search (watched: none here;

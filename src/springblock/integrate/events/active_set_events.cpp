@@ -138,14 +138,16 @@ bool ActiveSet::retire_settled(const Chain& c, const State& s) {
   if (!changed) return false;
   list_stepped(s);
   // The stuck blocks beside a newly settled run may now have an affine force.
-  for (const Run& r : runs_) {
-    if (r.kind != kSettled) continue;
-    for (int i : {r.span.lo - 1, r.span.hi})
-      if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && events_.time(i) == kInf && !refresh_stuck(c, s, i))
-        pending_.push_back(i);
-  }
+  for (const Run& r : runs_)
+    if (r.kind == kSettled) renew_borders(c, s, r.span);
   finish_events(c, s);
   return true;
+}
+
+void ActiveSet::renew_borders(const Chain& c, const State& s, BlockRange r) {
+  for (int i : {r.lo - 1, r.hi})
+    if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && events_.time(i) == kInf && !refresh_stuck(c, s, i))
+      pending_.push_back(i);
 }
 
 bool ActiveSet::promote_runs(const Chain& c, const State& s) {
@@ -161,8 +163,7 @@ bool ActiveSet::promote_runs(const Chain& c, const State& s) {
     changed = true;
     for (int i = r.span.lo; i < r.span.hi; ++i)
       if (c.contact[i] && s.dir[i] != 0) events_.set(i, kInf, false), pending_.push_back(i);
-    for (int i : {r.span.lo - 1, r.span.hi})
-      if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && !refresh_stuck(c, s, i)) pending_.push_back(i);
+    renew_borders(c, s, r.span);  // they were watched beside it, so they have no event time
   }
   list_stepped(s);
   finish_events(c, s);

@@ -22,7 +22,7 @@ ModalRuns::ModalRuns(const Chain& c)
       eps_v_(kStopMargin * c.v_slider),
       // One grid step for every run: the fastest mode any run can have is below
       // sqrt((K_s + 4 K_int) / m), so the per-mode transitions are computed once per basis.
-      H_(EdgeMarch::grid_step(std::sqrt((c.K_s + 4.0 * c.K_int) / c.m))),
+      H_(EdgeMarch::grid_step(c.omega_max())),
       modes_(c),
       shapes_(c),
       run_of_(c.N, -1),

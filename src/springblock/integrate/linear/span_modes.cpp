@@ -73,8 +73,7 @@ SpanModes::SpanModes(const Chain& c)
       scratch_v_(c.N) {
   // Every run's modes are below sqrt((K_s + 4 K_int) / m); an overdamped mode decays no faster
   // than gamma. H is set by the faster of the two, so the Taylor bound above holds for all.
-  const double omega_max = std::sqrt((c.K_s + 4.0 * c.K_int) / c.m);
-  H_ = kStepRadians / std::max(omega_max, c.gamma);
+  H_ = kStepRadians / std::max(c.omega_max(), c.gamma);
 }
 
 const SpanModes::Shape& SpanModes::shape(int n, bool left, bool right) {

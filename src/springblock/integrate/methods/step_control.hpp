@@ -17,8 +17,7 @@ class StepControl {
   StepControl(const Chain& c, double tol) {
     const double len = c.F_n / c.K_s, omega_s = std::sqrt(c.K_s / c.m);
     atol_u_ = tol * len, atol_v_ = tol * omega_s * len, rtol_ = tol;
-    const double omega_max = std::sqrt((c.K_s + 4.0 * c.K_int) / c.m);
-    h_ = 0.5 * std::pow(tol, 0.2) / omega_max;
+    h_ = 0.5 * std::pow(tol, 0.2) / c.omega_max();
   }
 
   double atol_u() const { return atol_u_; }
