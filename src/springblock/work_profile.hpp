@@ -31,10 +31,10 @@ namespace sb {
 
 // name, meaning. Seconds of one run (0 unless timed).
 #define SB_WORK_TIMES(X)                                                                                   \
-  X(stepping_s, "steps of the moving runs (exact: projections and modes; or Dormand-Prince trials)")         \
+  X(stepping_s, "steps of the moving runs (exact: projections and modes; Dormand-Prince trials; RK4 steps)")  \
   X(event_location_s, "search of each step for switches (exact: span screen; Dormand-Prince: dense output)") \
   X(switching_s, "switching rules, reclassification of the runs and their exact event times")              \
-  X(quiet_s, "quiet phases: projection onto the grooves' modes and the next threshold crossing")           \
+  X(quiet_s, "quiet phases: projection onto the grooves' modes and the next threshold crossing (RK4: jump)") \
   X(sampling_s, "samples: bringing exact runs to the sample time and the observer")
 
 struct WorkProfile {

@@ -78,7 +78,51 @@ void expect_consistent_counts(const Scene& sc) {
   }
 }
 
+// The fixed-step RK4 (the paper's method) times its kinds too: its steps, the switching rules
+// after each, its jumps over a fully stuck chain and its samples, every one served singly. A
+// coarse step (1e-6 s, 0.5 rad of the fastest mode, well inside RK4's stability) keeps it short.
+Scene rk4(const std::string& pattern) {
+  Scene s = base(pattern);
+  set_scene_field(s, "method", "rk4");
+  set_scene_field(s, "dt", "1e-6s");
+  s.reps = 1;
+  return s;
+}
+
+void expect_rk4_times(const Scene& sc) {
+  Scene timed = sc;
+  timed.observe.timed_work = true;
+  const auto res = run_ensemble(timed);
+  for (const auto& r : res.runs) {
+    const WorkProfile& w = r.work;
+    const auto expected = static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
+    EXPECT_EQ(w.samples, expected + 1);  // and the one at t = 0, which RK4 serves too
+    EXPECT_EQ(w.stretch_samples + w.summed_samples + w.peak_samples, 0);
+    EXPECT_GT(w.slip_starts, 0);
+    ASSERT_TRUE(w.timed);
+    double sum = 0;
+#define SB_SUM(name, doc) EXPECT_GE(w.name, 0.0) << #name, sum += w.name;
+    SB_WORK_TIMES(SB_SUM)
+#undef SB_SUM
+    EXPECT_GT(w.stepping_s, 0.0);
+    EXPECT_GT(w.switching_s, 0.0);
+    EXPECT_GT(w.sampling_s, 0.0);
+    EXPECT_EQ(w.event_location_s, 0.0);  // RK4 locates nothing: it switches at step ends
+    EXPECT_LE(sum, r.wall_s);
+  }
+}
+
 }  // namespace
+
+TEST(WorkProfile, Rk4TimingChangesNothing) { expect_timing_changes_nothing(rk4("periodic:3,3")); }
+TEST(WorkProfile, Rk4TimesItsSteps) { expect_rk4_times(rk4("periodic:3,3")); }
+TEST(WorkProfile, Rk4TimesItsQuietJumps) {
+  // Without grooves a fully stuck chain is jumped over: those jumps are quiet time.
+  const Scene sc = rk4("smooth");
+  Scene timed = sc;
+  timed.observe.timed_work = true;
+  for (const auto& r : run_ensemble(timed).runs) EXPECT_GT(r.work.quiet_s, 0.0);
+}
 
 TEST(WorkProfile, TimingChangesNothingWithGrooves) { expect_timing_changes_nothing(base("periodic:3,3")); }
 TEST(WorkProfile, TimingChangesNothingSmooth) { expect_timing_changes_nothing(base("smooth")); }

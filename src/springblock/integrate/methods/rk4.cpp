@@ -8,6 +8,7 @@
 
 #include "springblock/integrate/step/chain_accel.hpp"
 #include "springblock/kernel_clones.hpp"
+#include "springblock/work_profile.hpp"
 
 // The step and the switch screen have AVX2 clones (kernel_clones.hpp). With the screen they made
 // accuracy_cost's RK4 settings x1.4-2.2 faster (paper tier, before and after), bit-identical.
@@ -172,30 +173,47 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   // Times are n*h from an integer step count, so long runs do not accumulate rounding.
   std::int64_t n = std::llround(s.t / h);
   s.t = n * h;
+  // The work profile's times (--profile) in the event method's kinds: the steps, the switching
+  // rules, the quiet jumps and the samples; each a leaf, so they add up.
+  auto sample = [&] {
+    WorkTimer timer(s.work, s.work.sampling_s);
+    ++s.work.samples;
+    obs.sample(c, s);
+  };
   int n_sliding = apply_switches(c, s, w);
-  obs.sample(c, s);
+  sample();
   while (n < n_end && !obs.wants_stop()) {
     if (all_contact && n_sliding == 0) {
-      const std::int64_t jump = std::min(quiet_steps(c, s, n, h, n_end), n_end - n);
+      std::int64_t jump;
+      {
+        WorkTimer timer(s.work, s.work.quiet_s);
+        jump = std::min(quiet_steps(c, s, n, h, n_end), n_end - n);
+      }
       if (jump > 1) {
         // Nothing moves during the jump; emit the samples it covers.
         const std::int64_t target = n + jump - 1;
         for (std::int64_t k = (n / stride + 1) * stride; k <= target; k += stride) {
           s.t = k * h;
-          obs.sample(c, s);
+          sample();
           if (obs.wants_stop()) return;
         }
         n = target;
         s.t = n * h;
       }
     }
-    rk4_step<Coupled, Damped>(c, s, w, n * h, h);
+    {
+      WorkTimer timer(s.work, s.work.stepping_s);
+      rk4_step<Coupled, Damped>(c, s, w, n * h, h);
+    }
     ++n;
     s.t = n * h;
     ++s.steps;
     s.rhs_evals += 4;
-    n_sliding = apply_switches_screened(c, s, w, n_sliding, screen);
-    if (n % stride == 0) obs.sample(c, s);
+    {
+      WorkTimer timer(s.work, s.work.switching_s);
+      n_sliding = apply_switches_screened(c, s, w, n_sliding, screen);
+    }
+    if (n % stride == 0) sample();
   }
 }
 
