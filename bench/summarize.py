@@ -175,6 +175,22 @@ def vs_paper_ratios(path):
     return out
 
 
+def profile_overhead(path):
+    """Per scene of bench_vs_paper: the event method's median CPU time with the work profile's
+    times on (event_timed) over its median without (event), from the same interleaved run. What
+    springblock run --profile costs; the README quotes it from here. Shared with readme_cost.py."""
+    with open(path) as f:
+        units = {r["run_name"]: r.get("time_unit", "ns") for r in json.load(f)["benchmarks"]}
+    scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+    typical = {name.split("/iterations:")[0]: c["cpu_time"] * scale[units[name]] for name, c in medians(path).items()}
+    out = []
+    for sc in sorted({n.split("/")[1] for n in typical if n.startswith("vs_paper/")}):
+        plain, timed = typical.get(f"vs_paper/{sc}/event"), typical.get(f"vs_paper/{sc}/event_timed")
+        if plain and timed:
+            out.append({"scene": sc, "untimed_s": plain, "timed_s": timed, "ratio": timed / plain})
+    return out
+
+
 def vs_paper_table(path):
     """The event method against the paper's method and the project's RK4 (bench_vs_paper.cpp)."""
     print("\nEvent method against the paper's method and the project's RK4: N = 360, 1 s, seed 5, "
@@ -186,6 +202,9 @@ def vs_paper_table(path):
         verdict = "-" if r["met"] is None else ("met" if r["met"] else "not met")
         print(f"{r['scene']:16s}{r['against']:11s}{r['other_s']:9.2f}s{r['event_s']:9.3f}s"
               f"{'x' + format(r['ratio'], '.0f'):>9s}{'x' + format(r['wall_ratio'], '.0f'):>9s}{goal:>8s}  {verdict}")
+    for r in profile_overhead(path):
+        print(f"{r['scene']:16s}--profile timing: {r['timed_s']:.3f} s against {r['untimed_s']:.3f} s untimed, "
+              f"x{r['ratio']:.2f}")
 
 
 if __name__ == "__main__":

@@ -6,9 +6,9 @@
 // step-size control ("other" in the printed table).
 //
 // A counter costs an increment (all of them ~1% of a run's instructions); a timer two reads of
-// the steady clock (~30 ns each on the development machine), several per step: a timed run
-// measured 1.12x (periodic:10,10) to 1.20x (smooth) the CPU time of an untimed one. Hence timing
-// only when asked. The counters are what the cost model (tools/cost_model.py) fits.
+// the steady clock (~30 ns each on the development machine), several per step; bench_vs_paper's
+// event_timed case measures what that costs a run against the untimed one (the README's Cost
+// section). Hence timing only when asked. The counters are what the cost model (tools/cost_model.py) fits.
 #include <chrono>
 #include <cstdint>
 

@@ -109,5 +109,21 @@ class VsPaperRatios(unittest.TestCase):
         self.assertFalse(r[("smooth", "paper_rk4")]["met"])  # x973
 
 
+class ProfileOverhead(unittest.TestCase):
+    def test_timed_median_over_untimed_median_per_scene(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "vs_paper.json")
+            with open(path, "w") as f:
+                json.dump(bench_json({"vs_paper/smooth/event": [0.030, 0.040, 0.032],
+                                      "vs_paper/smooth/event_timed": [0.036, 0.050, 0.037],
+                                      "vs_paper/periodic:10,10/event": [0.05, 0.04, 0.06]}), f)
+            rows = summarize.profile_overhead(path)
+            # Only the scene with both cases; medians 0.037 over 0.032.
+            self.assertEqual([r["scene"] for r in rows], ["smooth"])
+            self.assertAlmostEqual(rows[0]["ratio"], 0.037 / 0.032)
+            text = "\n".join(rc.vs_paper_lines(path))
+            self.assertIn("x1.16 on smooth (0.037 s)", text)
+
+
 if __name__ == "__main__":
     unittest.main()
