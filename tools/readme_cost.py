@@ -3,7 +3,9 @@
 no timing in the README is typed by hand:
 
   --run    <build>/reproduce/last_run.json   (make reproduce-all: wall time per phase and target;
-                                              repeat for several fresh clones of one commit)
+                                              repeat for several fresh clones of one commit; the
+                                              target documents beside the median run's record
+                                              give its CPU time by integrator)
   --bench  <build>/bench/                    (make bench: Google Benchmark JSON, side by side;
                                               vs_paper.json holds issue 19's goals and verdicts)
 
@@ -93,6 +95,54 @@ def run_lines(runs):
     return out
 
 
+# How the targets' documents name an integrator (result.method, and result.stepper for the event
+# method), in the order the table shows them.
+INTEGRATORS = (("event", "exact", "event, exact stepper"), ("event", "dopri5", "event, Dormand-Prince"),
+               ("rk4", None, "RK4 (the paper's scheme)"))
+
+
+def work_lines(reproduce_dir, run):
+    """Where a run's target time went, by integrator: the CPU seconds of every repetition the
+    targets ran (runs[].cpu_s of <reproduce_dir>/<target>/<target>.json), against what the cores
+    had over the target phase. A scene borrowed from another target (borrowed_from), and a
+    document that only shows another target's results (source), are counted where they ran."""
+    cpu = {}  # target -> integrator label -> CPU seconds
+    for target in run["targets_s"]:
+        path = os.path.join(reproduce_dir, target, f"{target}.json")
+        if not os.path.exists(path):
+            continue
+        doc = json.load(open(path))
+        if "source" in doc:
+            continue
+        for sc in doc.get("scenes", []):
+            r = sc.get("result")
+            if "borrowed_from" in sc or not r:
+                continue
+            label = next((lab for m, st, lab in INTEGRATORS
+                          if r.get("method") == m and (st is None or r.get("stepper") == st)), r.get("method", "?"))
+            row = cpu.setdefault(target, {})
+            row[label] = row.get(label, 0.0) + sum(x.get("cpu_s", 0.0) for x in r.get("runs", []))
+    if not cpu:
+        return []
+    labels = [lab for _, _, lab in INTEGRATORS if any(lab in v for v in cpu.values())]
+    labels += sorted({lab for v in cpu.values() for lab in v} - set(labels))
+    total = sum(sum(v.values()) for v in cpu.values())
+    cores_s = run["cores"] * run["phases_s"].get("targets", 0.0)
+    share = f" ({100 * total / cores_s:.0f} %)" if cores_s > 0 else ""
+    out = ["", f"Where that run's target time went, by integrator: the CPU time of every repetition the targets "
+               f"ran (runs[].cpu_s in `build/reproduce/<target>/<target>.json`; a scene one target borrows from "
+               f"another counts where it ran), {secs(total)} of the {secs(cores_s)} its {run['cores']} cores had "
+               f"over the target phase{share}:", "",
+           "| target | target time | " + " | ".join(labels) + " |", "|---|---|" + "---|" * len(labels)]
+    for target in sorted(cpu, key=lambda t: -run["targets_s"][t]):
+        out.append(f"| {target} | {secs(run['targets_s'][target])} | "
+                   + " | ".join(secs(cpu[target][lab]) if lab in cpu[target] else "-" for lab in labels) + " |")
+    sums = {lab: sum(v.get(lab, 0.0) for v in cpu.values()) for lab in labels}
+    out.append("| all | " + secs(run["phases_s"].get("targets", 0.0)) + " | "
+               + " | ".join(secs(sums[lab]) for lab in labels) + " |")
+    return out
+
+
 UNIT_S = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 
 
@@ -179,7 +229,11 @@ def vs_paper_lines(path):
 
 
 def block(run_paths, bench_dir):
-    out = [BEGIN] + run_lines([json.load(open(p)) for p in run_paths])
+    runs = [json.load(open(p)) for p in run_paths]
+    out = [BEGIN] + run_lines(runs)
+    # The median run (as run_lines picks it) and the target documents beside its record.
+    k = sorted(range(len(runs)), key=lambda i: runs[i]["total_s"])[(len(runs) - 1) // 2]
+    out += work_lines(os.path.dirname(os.path.abspath(run_paths[k])), runs[k])
     for name, fn in (("vs_paper.json", vs_paper_lines), ("methods.json", methods_lines),
                      ("reproduction.json", reproduction_lines)):
         p = os.path.join(bench_dir, name)

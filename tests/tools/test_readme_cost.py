@@ -109,6 +109,35 @@ class VsPaperRatios(unittest.TestCase):
         self.assertFalse(r[("smooth", "paper_rk4")]["met"])  # x973
 
 
+class WorkLines(unittest.TestCase):
+    def test_cpu_by_integrator_counts_each_run_where_it_ran(self):
+        def scene(method, stepper, cpus, borrowed=False):
+            sc = {"id": "x", "result": {"method": method, "stepper": stepper, "runs": [{"cpu_s": c} for c in cpus]}}
+            if borrowed:
+                sc["borrowed_from"] = "tab_pat0/x"
+            return sc
+        docs = {"tab_pat0": {"scenes": [scene("event", "exact", [30.0, 10.0])]},
+                # a borrowed scene carries its source's runs: not counted again
+                "fig2": {"scenes": [scene("event", "exact", [20.0]), scene("event", "exact", [30.0, 10.0], True)]},
+                # a document showing another target's results: not counted again either
+                "tab_pat2": {"source": "tab_pat0", "scenes": [scene("event", "exact", [30.0, 10.0])]}}
+        run = record(300.0, 100.0)
+        run["targets_s"] = {"tab_pat0": 60.0, "fig2": 30.0, "tab_pat2": 10.0, "accuracy_cost": 0.5}
+        docs["accuracy_cost"] = {"scenes": [scene("rk4", "exact", [6.0]), scene("event", "dopri5", [2.0])]}
+        with tempfile.TemporaryDirectory() as d:
+            for t, doc in docs.items():
+                os.makedirs(os.path.join(d, t))
+                with open(os.path.join(d, t, f"{t}.json"), "w") as f:
+                    json.dump(doc, f)
+            text = "\n".join(rc.work_lines(d, run))
+        self.assertIn("68 s of the 200 s its 2 cores had over the target phase (34 %)", text)
+        self.assertIn("| tab_pat0 | 60 s | 40 s | - | - |", text)
+        self.assertIn("| fig2 | 30 s | 20 s | - | - |", text)
+        self.assertIn("| accuracy_cost | 0.5 s | - | 2.0 s | 6.0 s |", text)
+        self.assertNotIn("| tab_pat2 |", text)
+        self.assertIn("| all | 100 s | 60 s | 2.0 s | 6.0 s |", text)
+
+
 class ProfileOverhead(unittest.TestCase):
     def test_timed_median_over_untimed_median_per_scene(self):
         with tempfile.TemporaryDirectory() as d:
