@@ -25,7 +25,7 @@ namespace sb {
   X(exact_jumps, "jumps to the next closed-form event or sample with nothing to step")                         \
   X(switch_instants, "instants at which the switching rules were applied")                                      \
   X(samples, "samples of mu(t) served one by one")                                                              \
-  X(stretch_samples, "samples taken at once as affine stretches of a quiet phase")                             \
+  X(stretch_samples, "samples taken at once as affine stretches (a quiet phase; uncoupled blocks between events)") \
   X(summed_samples, "samples of a quiet phase taken as closed-form sums over its modes")                     \
   X(peak_samples, "loading samples of a quiet phase taken as a stretch: bounds pass over those below its peak")
 

@@ -112,8 +112,41 @@ void expect_rk4_times(const Scene& sc) {
   }
 }
 
+// Blocks without internal springs (K_int = 0) are solved one by one in closed form
+// (uncoupled.hpp): the rules at each block's event are switching, finding its next event is
+// event location, and the samples are served one by one or as affine stretches between events.
+Scene uncoupled(const std::string& pattern) {
+  Scene s = base(pattern);
+  set_scene_field(s, "k_int_scale", "0");
+  return s;
+}
+
+void expect_uncoupled_times(const Scene& sc) {
+  Scene timed = sc;
+  timed.observe.timed_work = true;
+  for (const auto& r : run_ensemble(timed).runs) {
+    const WorkProfile& w = r.work;
+    const auto expected = static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
+    EXPECT_EQ(w.samples + w.stretch_samples, expected + 1);  // and the one at t = 0
+    EXPECT_GT(w.stretch_samples, 0);
+    EXPECT_GT(w.slip_starts, 0);
+    EXPECT_GE(w.switch_instants, w.slip_starts);
+    ASSERT_TRUE(w.timed);
+    double sum = 0;
+#define SB_SUM(name, doc) EXPECT_GE(w.name, 0.0) << #name, sum += w.name;
+    SB_WORK_TIMES(SB_SUM)
+#undef SB_SUM
+    EXPECT_GT(w.event_location_s, 0.0);
+    EXPECT_GT(w.switching_s, 0.0);
+    EXPECT_GT(w.sampling_s, 0.0);
+    EXPECT_LE(sum, r.wall_s);
+  }
+}
+
 }  // namespace
 
+TEST(WorkProfile, UncoupledTimingChangesNothing) { expect_timing_changes_nothing(uncoupled("periodic:3,3")); }
+TEST(WorkProfile, UncoupledTimesItsEvents) { expect_uncoupled_times(uncoupled("periodic:3,3")); }
 TEST(WorkProfile, Rk4TimingChangesNothing) { expect_timing_changes_nothing(rk4("periodic:3,3")); }
 TEST(WorkProfile, Rk4TimesItsSteps) { expect_rk4_times(rk4("periodic:3,3")); }
 TEST(WorkProfile, Rk4TimesItsQuietJumps) {

@@ -1,47 +1,20 @@
 #include "springblock/integrate/methods/uncoupled.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <queue>
 #include <stdexcept>
 #include <string>
 
 #include "springblock/integrate/linear/damped_mode.hpp"
+#include "springblock/integrate/linear/mode_zero.hpp"
 #include "springblock/integrate/events/switching.hpp"
 #include "springblock/sample_schedule.hpp"
 #include "springblock/integrate/infinity.hpp"
 #include "springblock/integrate/round_off.hpp"
+#include "springblock/work_profile.hpp"
 
 namespace sb::event_detail {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-// First zero strictly after `from` of the damped-mode trajectory with q(0) = q0, q'(0) = p0
-// (infinity if none). Underdamped: q = e^{-alpha tau} R cos(w tau - phi), zeros every pi / w.
-// Critical and overdamped: at most one zero, from q0 + P tau = 0 or tanh(k tau) = -q0 k / P.
-double next_zero(const DampedMode& m, double q0, double p0, double from) {
-  const double a = m.alpha, s = m.s, P = p0 + a * q0;
-  if (q0 == 0.0 && P == 0.0) return kInf;
-  if (s > 0) {
-    const double w = m.w;
-    const double phi = std::atan2(P / w, q0);
-    const double k = std::ceil((w * from - phi - 0.5 * kPi) / kPi);
-    double tau = (phi + 0.5 * kPi + k * kPi) / w;
-    while (tau <= from) tau += kPi / w;
-    return tau;
-  }
-  if (P == 0.0) return kInf;
-  double tau;
-  if (s == 0) {
-    tau = -q0 / P;
-  } else {
-    const double k = m.w, r = -q0 * k / P;
-    if (!(r > -1.0 && r < 1.0)) return kInf;
-    tau = std::atanh(r) / k;
-  }
-  return tau > from ? tau : kInf;
-}
 
 struct Block {
   double t_ref = 0;       // start of the current moving phase
@@ -187,18 +160,25 @@ void Solver::apply_rules_at(int i, double t, bool event_here) {
   const long long limit = 100LL * c_.N;
   s_.t = t;
   int made = 0;
-  // The chain's rules (switching.hpp) on this one block until it stops changing.
-  for (;;) {
-    const int m = apply_rules(c_, s_, i, event_here);
-    event_here = false;
-    made += m;
-    if (at_instant_ + made > limit) throw_cascade(limit, t);
-    if (m == 0) break;
+  {
+    // The work profile's kinds as the coupled event method has them: the rules here, the
+    // block's next event time below (event location).
+    WorkTimer timer(s_.work, s_.work.switching_s);
+    ++s_.work.switch_instants;
+    // The chain's rules (switching.hpp) on this one block until it stops changing.
+    for (;;) {
+      const int m = apply_rules(c_, s_, i, event_here);
+      event_here = false;
+      made += m;
+      if (at_instant_ + made > limit) throw_cascade(limit, t);
+      if (m == 0) break;
+    }
+    at_instant_ += made;
+    s_.switches += made;
+    if (made > 0 && log_ && (log_->empty() || log_->back() != t)) log_->push_back(t);
+    update_friction(i);
   }
-  at_instant_ += made;
-  s_.switches += made;
-  if (made > 0 && log_ && (log_->empty() || log_->back() != t)) log_->push_back(t);
-  update_friction(i);
+  WorkTimer timer(s_.work, s_.work.event_location_s);
   if (s_.dir[i] != 0) {
     start_moving(i, t, s_.dir[i] * c_.f_kinetic[i]);
     schedule(i, first_stop(i));
@@ -230,6 +210,8 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
   }
   const bool friction_only = obs.reads_only_friction();
   auto sample = [&](double t) {
+    WorkTimer timer(s_.work, s_.work.sampling_s);
+    ++s_.work.samples;
     s_.t = t;
     if (!friction_only) materialise(t);
     obs.sample(c_, s_);
@@ -246,6 +228,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       queue_.pop();
       // The block's state at its event: a sliding block is at rest there, a stuck one unmoved.
       if (s_.dir[i] != 0) {
+        WorkTimer timer(s_.work, s_.work.stepping_s);
         double u, v;
         eval(i, t_event, u, v);
         s_.u[i] = u;
@@ -263,8 +246,13 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       // into stretches the same way whatever its end (FanOut relies on it).
       const double t_stop = std::min(t_event, t_end);
       const long long k = clock.index(), k_end = clock.first_at_or_after(t_stop);
-      const long used = obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k),
-                                          fa_.data(), fb_.data());
+      long used;
+      {
+        WorkTimer timer(s_.work, s_.work.sampling_s);
+        used = obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k), fa_.data(),
+                                 fb_.data());
+        if (used > 0) s_.work.stretch_samples += used;
+      }
       if (used > 0) {
         clock.advance(used);
         s_.t = clock.time_of(clock.index() - 1);
