@@ -31,6 +31,7 @@ sys.path.insert(0, str(REPO / "tables"))
 sys.path.insert(0, str(REPO / "tools"))
 import render_tables  # noqa: E402
 import summary_schema as schema  # noqa: E402
+import target_cost  # noqa: E402  (CPU time by integrator, as the README's Cost section reads it)
 from reproduction.inputs import read_tsv  # noqa: E402  (one reader of the tables)
 
 sys.path.insert(0, str(REPO / "paper"))
@@ -529,6 +530,28 @@ def cost_model_blocks(path):
     return B
 
 
+def target_cost_blocks(data):
+    """Where this run's target time went: per target, the wall time its document records and the
+    CPU time of the repetitions it ran, by integrator (tools/target_cost.py)."""
+    targets = sorted(p.name for p in Path(data).iterdir() if (p / f"{p.name}.json").is_file()) \
+        if Path(data).is_dir() else []
+    cpu, labels = target_cost.cpu_by_integrator(str(data), targets)
+    B = [("h", 3, "Where the target time goes")]
+    if not cpu:
+        return B + [("p", "not measured: no target document with repetitions.")]
+    wall = {t: (load_json(Path(data) / t / f"{t}.json") or {}).get("wall_seconds", 0.0) for t in cpu}
+    total = sum(sum(v.values()) for v in cpu.values())
+    B.append(("p", f"CPU time of every repetition the targets ran, by integrator, {total:.0f} s in all, beside each "
+                   f"target's wall time (a scene borrowed from another target counts where it ran; the README's "
+                   f"Cost section judges the time goals on fresh-clone runs)."))
+    rows = [[t, f"{wall[t]:.1f}"] + [f"{cpu[t][lab]:.1f}" if lab in cpu[t] else "-" for lab in labels]
+            for t in sorted(cpu, key=lambda t: -wall[t])]
+    rows.append(["all", f"{sum(wall.values()):.1f}"] + [f"{sum(v.get(lab, 0.0) for v in cpu.values()):.1f}"
+                                                       for lab in labels])
+    B.append(("table", ["target", "wall s"] + [f"{lab}, CPU s" for lab in labels], rows))
+    return B
+
+
 # ---------------------------------------------------------------- the document
 
 def build(data, figs, s):
@@ -590,6 +613,7 @@ def build(data, figs, s):
 
     # make bench writes the cost model next to the reproduction's results: build/bench.
     B += cost_model_blocks(data.parent / "bench" / "cost_model.json")
+    B += target_cost_blocks(data)
 
     B += report_studies.study_blocks(data, figs)
 

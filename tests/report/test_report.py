@@ -12,6 +12,7 @@ placeholder ('?', None, nan, unchecked) appears anywhere.
 Usage: test_report.py --data DIR (DIR/summary.json and the target documents; CTest: the
 configured tier's build/reproduce)."""
 import argparse
+import json
 import os
 import re
 import subprocess
@@ -193,6 +194,37 @@ def check_placeholders(md):
         check(not hits, f"placeholder {name} in the report: {hits[:3]}")
 
 
+def check_target_cost(md, data):
+    """'Where the target time goes': a row for every target whose document holds repetitions of
+    its own, each CPU figure the sum of its runs' cpu_s, and the 'all' row the columns' sums."""
+    table = next(((h, b) for h, b in tables(md) if h[:2] == ["target", "wall s"]), None)
+    check(table is not None, "no 'Where the target time goes' table")
+    if table is None:
+        return
+    head, body = table
+    rows = {r[0]: r for r in body}
+    total = 0.0
+    for name in sorted(os.listdir(data)):
+        path = os.path.join(data, name, f"{name}.json")
+        if not os.path.isfile(path):
+            continue
+        with open(path) as f:
+            doc = json.load(f)
+        own = 0.0 if "source" in doc else sum(
+            x.get("cpu_s", 0.0) for sc in doc.get("scenes", []) if "borrowed_from" not in sc and sc.get("result")
+            for x in sc["result"].get("runs", []))
+        total += own
+        check((own > 0) == (name in rows), f"target cost: {name} ({own:.1f} CPU s of its own) listed: {name in rows}")
+        if name in rows:
+            listed = sum(float(c) for c in rows[name][2:] if c != "-")
+            check(abs(listed - own) <= 0.05 * (len(head) - 2) + 1e-9, f"target cost: {name} {listed} != {own:.2f}")
+    if "all" in rows:
+        listed = sum(float(c) for c in rows["all"][2:])
+        check(abs(listed - total) <= 0.05 * (len(head) - 2) + 1e-9, f"target cost: all {listed} != {total:.2f}")
+    else:
+        check(False, "target cost: no 'all' row")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", required=True)
@@ -211,6 +243,7 @@ def main():
     n_claims = check_claims(md, s)
     check_summary_section(md, s)
     check_placeholders(md)
+    check_target_cost(md, a.data)
     for f in FAILURES:
         print("FAIL:", f)
     print(f"tier {s['tier']}: {n_rows} published numbers and {len(s['claims'])} claims ({n_claims} appearances) "
