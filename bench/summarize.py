@@ -141,6 +141,17 @@ VS_PAPER_GOALS = {("smooth", "paper_rk4"): 1000, ("periodic:10,10", "paper_rk4")
 VS_PAPER_AGAINST = (("paper_rk4", "the paper's method (naive RK4, h = 1e-7 s)"), ("rk4", "the project's RK4"))
 
 
+def in_seconds(path, runs):
+    """runs (run_name -> counters, as medians or fastest give them) keyed by the name without
+    /iterations:N, with cpu_s and wall_s in seconds (each benchmark states its own time unit)."""
+    with open(path) as f:
+        units = {r["run_name"]: r.get("time_unit", "ns") for r in json.load(f)["benchmarks"]}
+    scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+    return {name.split("/iterations:")[0]: dict(c, cpu_s=c["cpu_time"] * scale[units[name]],
+                                                 wall_s=c["real_time"] * scale[units[name]])
+            for name, c in runs.items()}
+
+
 def vs_paper_ratios(path):
     """One row per (scene, method compared with): CPU seconds of both sides and their ratio, the
     goal (None where the issue sets none) and whether it is met; the wall-clock ratio too.
@@ -150,15 +161,7 @@ def vs_paper_ratios(path):
     allocates its state at every stage, and its time depends on the allocator's state that the
     benchmarks interleaved with it leave (periodic:10,10 measured 37.4, 37.0 and 37.9 s run alone,
     38.6, 49.5 and 56.0 s interleaved). Shared with tools/readme_cost.py."""
-    with open(path) as f:
-        units = {r["run_name"]: r.get("time_unit", "ns") for r in json.load(f)["benchmarks"]}
-    scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
-
-    def in_seconds(runs):
-        return {name.split("/iterations:")[0]: dict(c, cpu_s=c["cpu_time"] * scale[units[name]],
-                                                     wall_s=c["real_time"] * scale[units[name]])
-                for name, c in runs.items()}
-    typical, best = in_seconds(medians(path)), in_seconds(fastest(path))
+    typical, best = in_seconds(path, medians(path)), in_seconds(path, fastest(path))
     out = []
     for sc in sorted({n.split("/")[1] for n in typical if n.startswith("vs_paper/")}):
         ev = typical.get(f"vs_paper/{sc}/event")
@@ -179,15 +182,13 @@ def profile_overhead(path):
     """Per scene of bench_vs_paper: the event method's median CPU time with the work profile's
     times on (event_timed) over its median without (event), from the same interleaved run. What
     springblock run --profile costs; the README quotes it from here. Shared with readme_cost.py."""
-    with open(path) as f:
-        units = {r["run_name"]: r.get("time_unit", "ns") for r in json.load(f)["benchmarks"]}
-    scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
-    typical = {name.split("/iterations:")[0]: c["cpu_time"] * scale[units[name]] for name, c in medians(path).items()}
+    typical = in_seconds(path, medians(path))
     out = []
     for sc in sorted({n.split("/")[1] for n in typical if n.startswith("vs_paper/")}):
         plain, timed = typical.get(f"vs_paper/{sc}/event"), typical.get(f"vs_paper/{sc}/event_timed")
         if plain and timed:
-            out.append({"scene": sc, "untimed_s": plain, "timed_s": timed, "ratio": timed / plain})
+            out.append({"scene": sc, "untimed_s": plain["cpu_s"], "timed_s": timed["cpu_s"],
+                        "ratio": timed["cpu_s"] / plain["cpu_s"]})
     return out
 
 

@@ -540,14 +540,13 @@ def target_cost_blocks(data):
     if not cpu:
         return B + [("p", "not measured: no target document with repetitions.")]
     wall = {t: (load_json(Path(data) / t / f"{t}.json") or {}).get("wall_seconds", 0.0) for t in cpu}
-    total = sum(sum(v.values()) for v in cpu.values())
-    B.append(("p", f"CPU time of every repetition the targets ran, by integrator, {total:.0f} s in all, beside each "
+    sums = target_cost.column_sums(cpu, labels)
+    B.append(("p", f"CPU time of every repetition the targets ran, by integrator, {sum(sums):.0f} s in all, beside each "
                    f"target's wall time (a scene borrowed from another target counts where it ran; the README's "
                    f"Cost section judges the time goals on fresh-clone runs)."))
     rows = [[t, f"{wall[t]:.1f}"] + [f"{cpu[t][lab]:.1f}" if lab in cpu[t] else "-" for lab in labels]
             for t in sorted(cpu, key=lambda t: -wall[t])]
-    rows.append(["all", f"{sum(wall.values()):.1f}"] + [f"{sum(v.get(lab, 0.0) for v in cpu.values()):.1f}"
-                                                       for lab in labels])
+    rows.append(["all", f"{sum(wall.values()):.1f}"] + [f"{x:.1f}" for x in sums])
     B.append(("table", ["target", "wall s"] + [f"{lab}, CPU s" for lab in labels], rows))
     return B
 

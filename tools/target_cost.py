@@ -43,3 +43,8 @@ def cpu_by_integrator(reproduce_dir, targets):
     labels = [lab for _, _, lab in INTEGRATORS if any(lab in v for v in cpu.values())]
     labels += sorted({lab for v in cpu.values() for lab in v} - set(labels))
     return cpu, labels
+
+
+def column_sums(cpu, labels):
+    """Each integrator's CPU seconds over all targets, in the labels' order."""
+    return [sum(v.get(lab, 0.0) for v in cpu.values()) for lab in labels]

@@ -8,7 +8,8 @@
 // A counter costs an increment (all of them ~1% of a run's instructions); a timer two reads of
 // the steady clock (~30 ns each on the development machine), several per step; bench_vs_paper's
 // event_timed case measures what that costs a run against the untimed one (the README's Cost
-// section). Hence timing only when asked. The counters are what the cost model (tools/cost_model.py) fits.
+// section). Hence timing only when asked. The counters are what the cost model
+// (tools/cost_model.py) fits.
 #include <chrono>
 #include <cstdint>
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "springblock/ensemble.hpp"
 #include "springblock/scene_fields.hpp"
@@ -44,18 +45,36 @@ void expect_timing_changes_nothing(const Scene& plain) {
   }
 }
 
-// Counts that must hold on any event run.
-void expect_consistent_counts(const Scene& sc) {
+// The scene's repetitions with the work profile's times on.
+std::vector<RunResult> timed_runs(const Scene& sc) {
   Scene timed = sc;
   timed.observe.timed_work = true;
-  const auto res = run_ensemble(timed);
-  for (const auto& r : res.runs) {
+  return run_ensemble(timed).runs;
+}
+
+// The sample times in (0, t_end] of a run.
+std::int64_t sample_times(const RunResult& r, const Scene& sc) {
+  return static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
+}
+
+// Every time there, none negative, and together no more than the repetition's wall time.
+void expect_times_add_up(const RunResult& r) {
+  const WorkProfile& w = r.work;
+  ASSERT_TRUE(w.timed);
+  double sum = 0;
+#define SB_SUM(name, doc) EXPECT_GE(w.name, 0.0) << #name, sum += w.name;
+  SB_WORK_TIMES(SB_SUM)
+#undef SB_SUM
+  EXPECT_LE(sum, r.wall_s);
+}
+
+// Counts that must hold on any event run.
+void expect_consistent_counts(const Scene& sc) {
+  for (const auto& r : timed_runs(sc)) {
     const WorkProfile& w = r.work;
     // Every sample time in (0, t_end] is served once, one by one, in an affine stretch or in a
-    // block summed over the modes (the sample at
-    // t = 0 is the run's start, not counted).
-    const auto expected = static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
-    EXPECT_EQ(w.samples + w.stretch_samples + w.summed_samples + w.peak_samples, expected);
+    // block summed over the modes (the sample at t = 0 is the run's start, not counted).
+    EXPECT_EQ(w.samples + w.stretch_samples + w.summed_samples + w.peak_samples, sample_times(r, sc));
     // A switch is a start or a stop, and a block stops only after it started.
     EXPECT_GT(w.slip_starts, 0);
     EXPECT_GE(r.switches, w.slip_starts);
@@ -68,13 +87,8 @@ void expect_consistent_counts(const Scene& sc) {
     EXPECT_GE(r.steps, w.event_steps + w.exact_jumps);
     EXPECT_LE(w.rejected_steps + w.event_steps, w.stepped_attempts);
     EXPECT_GE(w.block_steps, w.stepped_attempts);  // a trial integrates at least one block
-    ASSERT_TRUE(w.timed);
-    double sum = 0;
-#define SB_SUM(name, doc) EXPECT_GE(w.name, 0.0) << #name, sum += w.name;
-    SB_WORK_TIMES(SB_SUM)
-#undef SB_SUM
+    expect_times_add_up(r);
     EXPECT_GT(w.stepping_s, 0.0);
-    EXPECT_LE(sum, r.wall_s);
   }
 }
 
@@ -90,25 +104,16 @@ Scene rk4(const std::string& pattern) {
 }
 
 void expect_rk4_times(const Scene& sc) {
-  Scene timed = sc;
-  timed.observe.timed_work = true;
-  const auto res = run_ensemble(timed);
-  for (const auto& r : res.runs) {
+  for (const auto& r : timed_runs(sc)) {
     const WorkProfile& w = r.work;
-    const auto expected = static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
-    EXPECT_EQ(w.samples, expected + 1);  // and the one at t = 0, which RK4 serves too
+    EXPECT_EQ(w.samples, sample_times(r, sc) + 1);  // and the one at t = 0, which RK4 serves too
     EXPECT_EQ(w.stretch_samples + w.summed_samples + w.peak_samples, 0);
     EXPECT_GT(w.slip_starts, 0);
-    ASSERT_TRUE(w.timed);
-    double sum = 0;
-#define SB_SUM(name, doc) EXPECT_GE(w.name, 0.0) << #name, sum += w.name;
-    SB_WORK_TIMES(SB_SUM)
-#undef SB_SUM
+    expect_times_add_up(r);
     EXPECT_GT(w.stepping_s, 0.0);
     EXPECT_GT(w.switching_s, 0.0);
     EXPECT_GT(w.sampling_s, 0.0);
     EXPECT_EQ(w.event_location_s, 0.0);  // RK4 locates nothing: it switches at step ends
-    EXPECT_LE(sum, r.wall_s);
   }
 }
 
@@ -122,24 +127,16 @@ Scene uncoupled(const std::string& pattern) {
 }
 
 void expect_uncoupled_times(const Scene& sc) {
-  Scene timed = sc;
-  timed.observe.timed_work = true;
-  for (const auto& r : run_ensemble(timed).runs) {
+  for (const auto& r : timed_runs(sc)) {
     const WorkProfile& w = r.work;
-    const auto expected = static_cast<std::int64_t>(std::floor(r.t_end_s / sc.run.sample_dt_s + 1e-9));
-    EXPECT_EQ(w.samples + w.stretch_samples, expected + 1);  // and the one at t = 0
+    EXPECT_EQ(w.samples + w.stretch_samples, sample_times(r, sc) + 1);  // and the one at t = 0
     EXPECT_GT(w.stretch_samples, 0);
     EXPECT_GT(w.slip_starts, 0);
     EXPECT_GE(w.switch_instants, w.slip_starts);
-    ASSERT_TRUE(w.timed);
-    double sum = 0;
-#define SB_SUM(name, doc) EXPECT_GE(w.name, 0.0) << #name, sum += w.name;
-    SB_WORK_TIMES(SB_SUM)
-#undef SB_SUM
+    expect_times_add_up(r);
     EXPECT_GT(w.event_location_s, 0.0);
     EXPECT_GT(w.switching_s, 0.0);
     EXPECT_GT(w.sampling_s, 0.0);
-    EXPECT_LE(sum, r.wall_s);
   }
 }
 
@@ -151,10 +148,7 @@ TEST(WorkProfile, Rk4TimingChangesNothing) { expect_timing_changes_nothing(rk4("
 TEST(WorkProfile, Rk4TimesItsSteps) { expect_rk4_times(rk4("periodic:3,3")); }
 TEST(WorkProfile, Rk4TimesItsQuietJumps) {
   // Without grooves a fully stuck chain is jumped over: those jumps are quiet time.
-  const Scene sc = rk4("smooth");
-  Scene timed = sc;
-  timed.observe.timed_work = true;
-  for (const auto& r : run_ensemble(timed).runs) EXPECT_GT(r.work.quiet_s, 0.0);
+  for (const auto& r : timed_runs(rk4("smooth"))) EXPECT_GT(r.work.quiet_s, 0.0);
 }
 
 TEST(WorkProfile, TimingChangesNothingWithGrooves) { expect_timing_changes_nothing(base("periodic:3,3")); }

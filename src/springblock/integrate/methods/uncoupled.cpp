@@ -246,14 +246,13 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       // into stretches the same way whatever its end (FanOut relies on it).
       const double t_stop = std::min(t_event, t_end);
       const long long k = clock.index(), k_end = clock.first_at_or_after(t_stop);
-      long used;
-      {
+      const long used = [&] {
         WorkTimer timer(s_.work, s_.work.sampling_s);
-        used = obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k), fa_.data(),
+        return obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k), fa_.data(),
                                  fb_.data());
-        if (used > 0) s_.work.stretch_samples += used;
-      }
+      }();
       if (used > 0) {
+        s_.work.stretch_samples += used;
         clock.advance(used);
         s_.t = clock.time_of(clock.index() - 1);
         continue;
