@@ -62,11 +62,11 @@ class Progress:
             self.shown = ""
 
 
-def run_logged(cmd, log_path, on_line=None):
+def run_logged(cmd, log_path, on_line=None, cwd=None):
     """Run cmd with stdout and stderr into log_path; on_line(bytes) sees each line as it comes
     (carriage returns, as in progress lines, end a line too)."""
     with open(log_path, "wb") as log:
-        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, cwd=cwd)
         pending = b""
         while True:
             chunk = p.stdout.read1(65536)
@@ -99,12 +99,26 @@ def read_names(rdir, listing):
     return [n.strip() for n in open(os.path.join(rdir, listing)) if n.strip()]
 
 
+def up_to_date(cmd):
+    """Whether a target's output exists and no input of its command (the driver program, the
+    tables and documents it reads) is newer: make's rule for its custom command."""
+    try:
+        out = os.path.getmtime(cmd["output"])
+    except OSError:
+        return False
+    # A missing input: out of date, and the target's own run says what it lacks.
+    return all(os.path.exists(d) and os.path.getmtime(d) <= out for d in cmd["depends"])
+
+
 def run_targets(build, tier, logs, listing, describe):
-    """The targets of the listing, in one build command (each target runs its repetitions on every
-    core, one after the other): a line per target as it finishes, one progress line meanwhile,
-    each target's output in logs/<target>.log. Returns non-zero on the first failure."""
+    """The targets of the listing, one after the other (each runs its repetitions on every core):
+    a line per target as it finishes, one progress line meanwhile, each target's output in
+    logs/<target>.log. The reproduction targets run their commands from
+    <build>/reproduce/commands.json directly; the studies go through the build tool (one of
+    them is a script target). Returns non-zero on the first failure."""
     rdir = os.path.join(build, "reproduce")
     names = read_names(rdir, listing)
+    commands = json.load(open(os.path.join(rdir, "commands.json"))) if listing == "targets.txt" else None
     tpath = os.path.join(rdir, "timings.json")
     timings = json.load(open(tpath)) if os.path.exists(tpath) else {}
     past = timings.get(tier) or default_weights()
@@ -113,11 +127,19 @@ def run_targets(build, tier, logs, listing, describe):
     cur = {"name": None, "t": 0.0, "log": None}
     seen = []
 
+    def open_target(n, own_log):
+        # own_log: the build tool's output is split into per-target logs here; a target run
+        # directly writes its log through run_logged.
+        seen.append(n)
+        cur.update(name=n, t=time.time(), log=open(os.path.join(logs, f"{n}.log"), "wb") if own_log else None)
+        progress.show(f"[{len(seen)}/{len(names)}] {n}", force=True)
+
     def close():
         n = cur["name"]
         if n is None:
             return
-        cur["log"].close()
+        if cur["log"]:
+            cur["log"].close()
         wall = time.time() - cur["t"]
         past[n] = wall
         progress.done += weight.get(n, 0.0)
@@ -126,15 +148,13 @@ def run_targets(build, tier, logs, listing, describe):
         cur["name"] = None
 
     def line(raw):
-        m = START.search(raw)
+        m = START.search(raw) if commands is None else None
         if m and m.group(1).decode() in weight:
             close()
-            n = m.group(1).decode()
-            seen.append(n)
-            cur.update(name=n, t=time.time(), log=open(os.path.join(logs, f"{n}.log"), "wb"))
-            progress.show(f"[{len(seen)}/{len(names)}] {n}", force=True)
+            open_target(m.group(1).decode(), True)
         if cur["name"]:
-            cur["log"].write(raw + b"\n")
+            if cur["log"]:
+                cur["log"].write(raw + b"\n")
             # The target's own progress lines ("[fig2] 44 scenes, 51.4% ..."), not make's "[ 86%]".
             hits = PERCENT.findall(raw) if raw.lstrip().startswith(b"[" + cur["name"].encode() + b"]") else []
             if hits:
@@ -142,13 +162,27 @@ def run_targets(build, tier, logs, listing, describe):
                 progress.show(f"[{len(seen)}/{len(names)}] {cur['name']} {100 * frac:.0f}%",
                               weight[cur["name"]] * frac)
 
-    log = os.path.join(logs, listing.replace(".txt", ".log"))
-    rc = run_logged(["cmake", "--build", build, "--target"] + [f"reproduce_{n}" for n in names], log, line)
-    failed = cur["name"]
-    if rc:
-        progress.clear()
-        return fail(f"target {failed}" if failed else "the reproduction", os.path.join(logs, f"{failed}.log")
-                    if failed else log)
+    if commands is None:
+        log = os.path.join(logs, listing.replace(".txt", ".log"))
+        rc = run_logged(["cmake", "--build", build, "--target"] + [f"reproduce_{n}" for n in names], log, line)
+        failed = cur["name"]
+        if rc:
+            progress.clear()
+            return fail(f"target {failed}" if failed else "the reproduction",
+                        os.path.join(logs, f"{failed}.log") if failed else log)
+    else:
+        for n in names:
+            cmd = commands[n]
+            if up_to_date(cmd):
+                continue
+            open_target(n, False)
+            log = os.path.join(logs, f"{n}.log")
+            # In the directory its custom command runs in (CMake's default for it).
+            rc = run_logged([cmd["program"]] + cmd["args"], log, line, cwd=rdir)
+            if rc:
+                progress.clear()
+                return fail(f"target {n}", log)
+            close()
     close()
     for n in names:
         if n not in seen:
