@@ -73,6 +73,7 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), slider_slope_(c.K_s * 
   qds_.resize(offset);
   end_dots_.resize(2 * segs_.size());
   end_bound_.resize(2 * segs_.size());
+  slot_.resize(segs_.size());
   for (auto* w : {&wq_, &wp_, &wq1_, &wp1_}) w->resize(offset);
   order_.resize(edges_.size());
 }

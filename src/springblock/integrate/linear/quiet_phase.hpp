@@ -73,15 +73,17 @@ class QuietPhase {
   // its segments' end rows' modes (the settle-scale cut of ends_only samples applies). Rounds
   // differently from summing the forces of the written rows, not otherwise different.
   void friction_sums(double t, double& sum_abs, double& sum_signed);
-  // The same two sums added over the n samples at t_k = k dt, k = k0 .. k0 + n - 1, in closed
-  // form, when no contact block's force can change sign over them (each |f_i| is then +-f_i,
-  // and f_i is affine plus modes, whose sum over equally spaced samples is a geometric series:
-  // RunBasis::sample_sum). Costs two direct evaluations of each live mode instead of a
-  // recurrence step and a dot product per mode and sample. The modes are cut where samples cut
-  // them (sample_dead_tau), so the sums are those of friction_sums over the same samples up to
-  // round-off. False (nothing summed) when a force may change sign or a mode has no closed-form
-  // sum. Leaves the sample cursor alone; the sums depend on k0 and n only, not on what was
-  // sampled before.
+  // The same two sums added over the n samples at t_k = k dt, k = k0 .. k0 + n - 1: in closed
+  // form for every contact block's force that cannot change sign over them (each |f_i| is then
+  // +-f_i, and f_i is affine plus modes, whose sum over equally spaced samples is a geometric
+  // series: RunBasis::sample_sum), sample by sample for a force beside a groove whose sign the
+  // bounds cannot fix (its segments' end rows by the sample recurrence; the other segments are
+  // not visited). Costs two direct evaluations of each live mode instead of a recurrence step and
+  // a dot product per mode and sample. The modes are cut where samples cut them
+  // (sample_dead_tau), so the sums are those of friction_sums over the same samples up to
+  // round-off. False (nothing summed) when a force beside no groove crosses zero inside the
+  // stretch or a mode has no closed-form sum. Leaves the sample cursor alone; the sums depend on
+  // k0 and n only, not on what was sampled before.
   bool window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
   // For an observer of the loading peak: bounds on the friction sums friction_sums gives at the
   // samples k0 .. k0 + n - 1 (SampleStretch::Envelope), when no contact block's force can change
@@ -142,7 +144,11 @@ class QuietPhase {
   void project(const GrooveRun& s, const double* u, const double* v, bool on_path);
   void set_dead_times(GrooveRun& s) const;
   // window_sums' and envelope's test (quiet_phase_window.cpp), and an edge's modal reach.
-  bool keeps_signs(double tau0, double tau_last, bool need_sums);
+  // With `unsure`, an edge whose sign the bounds cannot fix is flagged there instead of failing
+  // the test.
+  bool keeps_signs(double tau0, double tau_last, bool need_sums, std::vector<char>* unsure = nullptr);
+  // window_sums' share of the flagged edges: their forces summed sample by sample.
+  void unsure_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
   double edge_reach(const Edge& e) const;
   // u, v of segment s at absolute time t from its modal coordinates q, qd.
   void to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
@@ -173,6 +179,9 @@ class QuietPhase {
   std::vector<double> end_dots_;   // friction_sums: per segment, first and last row . q
   std::vector<double> wq_, wp_, wq1_, wp1_;  // window_sums: modes at the first sample and past the last live one
   std::vector<double> end_bound_;  // window_sums: per segment, bounds on its first and last rows' modal part
+  std::vector<char> unsure_;        // window_sums: per edge, its sign not fixed by the bounds
+  std::vector<int> slot_;           // unsure_sums: per segment, its place in row_values_ (-1: none)
+  std::vector<double> row_values_;  // unsure_sums: those rows' modal parts, sample by sample
 };
 
 }  // namespace sb::event_detail

@@ -11,6 +11,12 @@
 // affine part is monotone, so checking the last sample checks them all. The contact blocks with
 // no groove neighbour have affine forces of one common slope (CommonSlopeSum): they keep their
 // signs while no one of them crosses zero.
+//
+// An edge force whose sign the bound cannot fix (its affine part within the modes' reach: just
+// after a slip, beside a groove still ringing) is summed sample by sample instead, from its
+// segments' end rows brought from sample to sample by the same recurrence as advance_sample;
+// the other forces stay in closed form. Before, one such edge sent the whole block of samples to
+// one-by-one service (every live mode advanced, every edge summed, per sample).
 #include <algorithm>
 #include <cmath>
 
@@ -25,7 +31,7 @@ namespace sb::event_detail {
 // bounds come from the modes at tau0 itself, never from an earlier sample's, so whether a stretch
 // is taken depends on the phase and the stretch only, not on which samples were served before
 // it (an observer keeping the series gets the sums of one that does not).
-bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
+bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums, std::vector<char>* unsure) {
   if (!interior_ready_) {
     interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
     interior_ready_ = true;
@@ -51,10 +57,14 @@ bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
   }
   // Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at
   // both ends of the stretch (so everywhere between).
-  for (const Edge& e : edges_) {
+  if (unsure) unsure->assign(edges_.size(), 0);
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const Edge& e = edges_[k];
     const double reach = edge_reach(e);
     const double f0 = e.fa + e.fb * tau0, sg = f0 >= 0 ? 1.0 : -1.0;
-    if (!(sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach)) return false;
+    if (sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach) continue;
+    if (!unsure) return false;
+    (*unsure)[k] = 1;
   }
   return true;
 }
@@ -70,7 +80,7 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   if (n <= 0) return false;
   auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
   const double tau0 = tau_of(k0);
-  if (!keeps_signs(tau0, tau_of(k0 + n - 1), true)) return false;
+  if (!keeps_signs(tau0, tau_of(k0 + n - 1), true, &unsure_)) return false;
   const int p0 = interior_.crossed(tau0);
   // Each live segment's end rows summed over its live samples (those with tau <= sample_dead_tau,
   // as friction_sums counts them).
@@ -102,13 +112,68 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   const double mm = static_cast<double>(n);
   const double st = dt * (0.5 * static_cast<double>(2 * k0 + n - 1) * mm) - mm * t0_;
   interior_.sums(p0, n, st, sum_abs, sum_signed);
-  for (const Edge& e : edges_) {
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    if (unsure_[k]) continue;
+    const Edge& e = edges_[k];
     double f = e.fa * mm + e.fb * st;
     for (int r = 0; r < e.nseg; ++r) f += K_int_ * end_dots_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
     sum_abs += e.fa + e.fb * tau0 >= 0 ? f : -f;  // every sample's sign (checked above)
     sum_signed += f;
   }
+  unsure_sums(k0, dt, n, sum_abs, sum_signed);
   return true;
+}
+
+void QuietPhase::unsure_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
+  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
+  // The segments beside the flagged edges, each given a slot of 2 n values: its first and last
+  // rows' modal parts at each sample.
+  std::fill(slot_.begin(), slot_.end(), -1);
+  int slots = 0;
+  for (std::size_t k = 0; k < edges_.size(); ++k)
+    if (unsure_[k])
+      for (int r = 0; r < edges_[k].nseg; ++r)
+        if (slot_[edges_[k].seg[r]] < 0) slot_[edges_[k].seg[r]] = slots++;
+  if (slots == 0) return;
+  // Zero once the segment's modes are cut, as friction_sums cuts them; from the modes at the
+  // first sample (keeps_signs' wq_, wp_) before.
+  const std::size_t nn = static_cast<std::size_t>(n);
+  row_values_.assign(2 * nn * static_cast<std::size_t>(slots), 0.0);
+  const double tau0 = tau_of(k0);
+  for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
+    const GrooveRun& s = segs_[sgi];
+    if (slot_[sgi] < 0 || !(tau0 <= s.sample_dead_tau)) continue;
+    const RunBasis& d = *s.basis;
+    double* q = wq1_.data() + s.offset;  // window_sums is done with them: a working copy
+    double* p = wp1_.data() + s.offset;
+    std::copy(wq_.begin() + s.offset, wq_.begin() + s.offset + s.n, q);
+    std::copy(wp_.begin() + s.offset, wp_.begin() + s.offset + s.n, p);
+    double* first = row_values_.data() + 2 * nn * static_cast<std::size_t>(slot_[sgi]);
+    double* last = first + n;
+    for (long j = 0; j < n && tau_of(k0 + j) <= s.sample_dead_tau; ++j) {
+      double f = 0, l = 0;
+      for (int k = 0; k < s.n; ++k) f += d.first_row[k] * q[k], l += d.last_row[k] * q[k];
+      first[j] = f, last[j] = l;
+      for (int k = 0; k < s.n; ++k) {
+        const double a = q[k], b = p[k];
+        const Transition& P = d.sample[k];
+        q[k] = P[0] * a + P[1] * b;
+        p[k] = P[2] * a + P[3] * b;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    if (!unsure_[k]) continue;
+    const Edge& e = edges_[k];
+    for (long j = 0; j < n; ++j) {
+      double f = e.fa + e.fb * tau_of(k0 + j);
+      for (int r = 0; r < e.nseg; ++r)
+        f += K_int_ * row_values_[2 * nn * static_cast<std::size_t>(slot_[e.seg[r]]) + (e.row[r] == 0 ? 0 : nn) +
+                                  static_cast<std::size_t>(j)];
+      sum_abs += std::fabs(f);
+      sum_signed += f;
+    }
+  }
 }
 
 // Each sum is affine in tau up to the edges' modal parts, whose sizes edge_reach bounds: with
