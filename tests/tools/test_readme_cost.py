@@ -24,6 +24,12 @@ def record(total, targets, commit="abc1234", tier="paper", units=25, fresh=True)
             "targets_s": {"tab_pat0": 0.4 * targets, "fig2": 0.3 * targets, "tab_pat2": 0.3 * targets}}
 
 
+class Seconds(unittest.TestCase):
+    def test_small_times_keep_a_significant_digit(self):
+        self.assertEqual([rc.secs(x) for x in (123.4, 12.3, 5.04, 0.52, 0.04)],
+                         ["123 s", "12 s", "5.0 s", "0.5 s", "0.04 s"])
+
+
 class RunLines(unittest.TestCase):
     def test_one_run_is_printed_as_it_is(self):
         text = "\n".join(rc.run_lines([record(431.0, 294.0)]))
