@@ -81,9 +81,10 @@ class QuietPhase {
   // not visited). Costs two direct evaluations of each live mode instead of a recurrence step and
   // a dot product per mode and sample. The modes are cut where samples cut them
   // (sample_dead_tau), so the sums are those of friction_sums over the same samples up to
-  // round-off. False (nothing summed) when a force beside no groove crosses zero inside the
-  // stretch or a mode has no closed-form sum. Leaves the sample cursor alone; the sums depend on
-  // k0 and n only, not on what was sampled before.
+  // round-off. A force beside no groove is affine with the slider's slope and crosses zero at a
+  // known time: the samples on either side of it are summed apart. False (nothing summed) when a
+  // mode has no closed-form sum. Leaves the sample cursor alone; the sums depend on k0 and n
+  // only, not on what was sampled before.
   bool window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
   // For an observer of the loading peak: bounds on the friction sums friction_sums gives at the
   // samples k0 .. k0 + n - 1 (SampleStretch::Envelope), when no contact block's force can change

@@ -36,8 +36,9 @@ bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums, std::
     interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
     interior_ready_ = true;
   }
-  // Interior forces: none crosses zero inside the stretch.
-  if (interior_.crossed(tau_last) != interior_.crossed(tau0)) return false;
+  // Interior forces: for bounds, none crosses zero inside the stretch; the sums split the
+  // stretch at their crossings instead (window_sums).
+  if (!need_sums && interior_.crossed(tau_last) != interior_.crossed(tau0)) return false;
   // The live segments' modes at tau0, and bounds on their end rows' modal part from then on.
   for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
     const GrooveRun& s = segs_[sgi];
@@ -81,7 +82,6 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
   const double tau0 = tau_of(k0);
   if (!keeps_signs(tau0, tau_of(k0 + n - 1), true, &unsure_)) return false;
-  const int p0 = interior_.crossed(tau0);
   // Each live segment's end rows summed over its live samples (those with tau <= sample_dead_tau,
   // as friction_sums counts them).
   for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
@@ -109,9 +109,31 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   }
   // The affine parts: sum of the sample times, sum_j (k dt - t0) with the sum of k exact in
   // integers.
+  auto sum_of_taus = [&](long k, long m) {
+    const double mm = static_cast<double>(m);
+    return dt * (0.5 * static_cast<double>(2 * k + m - 1) * mm) - mm * t0_;
+  };
   const double mm = static_cast<double>(n);
-  const double st = dt * (0.5 * static_cast<double>(2 * k0 + n - 1) * mm) - mm * t0_;
-  interior_.sums(p0, n, st, sum_abs, sum_signed);
+  const double st = sum_of_taus(k0, n);
+  // The forces beside no groove: each crosses zero once, at a known time (CommonSlopeSum), so
+  // the samples between two crossings are summed at once, a stretch without one in a single
+  // piece (as before crossings split it).
+  double interior_abs = 0, interior_signed = 0;
+  for (long j = 0; j < n;) {
+    const int p = interior_.crossed(tau_of(k0 + j));
+    long lo = j, hi = n - 1;  // the last sample with p crossings: crossed() grows with tau
+    while (lo < hi) {
+      const long mid = hi - (hi - lo) / 2;
+      if (interior_.crossed(tau_of(k0 + mid)) == p) lo = mid;
+      else hi = mid - 1;
+    }
+    const long m = lo + 1 - j;
+    double part_abs, part_signed;
+    interior_.sums(p, m, m == n ? st : sum_of_taus(k0 + j, m), part_abs, part_signed);
+    interior_abs += part_abs, interior_signed += part_signed;
+    j += m;
+  }
+  sum_abs = interior_abs, sum_signed = interior_signed;
   for (std::size_t k = 0; k < edges_.size(); ++k) {
     if (unsure_[k]) continue;
     const Edge& e = edges_[k];
