@@ -9,8 +9,8 @@
 // A force keeps its sign while its affine part stays further from zero than the modes can
 // reach: each mode's energy never grows, so the bound taken at tau_0 holds throughout, and an
 // affine part is monotone, so checking the last sample checks them all. The contact blocks with
-// no groove neighbour have affine forces of one common slope (CommonSlopeSum): they keep their
-// signs while no one of them crosses zero.
+// no groove neighbour have affine forces of one common slope (CommonSlopeSum): each crosses zero
+// once, at a known time, and the samples between two such crossings are summed at once.
 //
 // An edge force whose sign the bound cannot fix (its affine part within the modes' reach: just
 // after a slip, beside a groove still ringing) is summed sample by sample instead, from its
@@ -27,7 +27,8 @@ namespace sb::event_detail {
 
 // Whether every contact block's force keeps its sign over tau0 .. tau_last (the tests above),
 // with the live segments' modes at tau0 in wq_, wp_ and bounds on their end rows' modal part from
-// then on in end_bound_. need_sums: also false when a mode has no closed-form sample sum. The
+// then on in end_bound_. need_sums: the forces beside no groove are not tested (window_sums
+// splits the stretch at their crossings), and false when a mode has no closed-form sample sum. The
 // bounds come from the modes at tau0 itself, never from an earlier sample's, so whether a stretch
 // is taken depends on the phase and the stretch only, not on which samples were served before
 // it (an observer keeping the series gets the sums of one that does not).
