@@ -34,21 +34,19 @@ class UpToDate(unittest.TestCase):
     def tearDown(self):
         self.dir.cleanup()
 
-    def test_missing_output_runs(self):
-        touch(self.dep, 1000)
-        self.assertFalse(ra.up_to_date(self.cmd))
-
-    def test_newer_input_runs(self):
-        touch(self.out, 1000), touch(self.dep, 1001)
-        self.assertFalse(ra.up_to_date(self.cmd))
-
-    def test_missing_input_runs(self):
-        touch(self.out, 1000)
-        self.assertFalse(ra.up_to_date(self.cmd))
-
-    def test_older_or_equal_inputs_do_not(self):
-        touch(self.out, 1000), touch(self.dep, 1000)
-        self.assertTrue(ra.up_to_date(self.cmd))
+    def test_make_rule(self):
+        # (output's mtime, input's mtime, None: missing) -> up to date
+        cases = {"missing output runs": (None, 1000, False), "newer input runs": (1000, 1001, False),
+                 "missing input runs": (1000, None, False), "older input does not": (1000, 999, True),
+                 "input as old as the output does not": (1000, 1000, True)}
+        for name, (out, dep, expected) in cases.items():
+            with self.subTest(name):
+                for path, t in ((self.out, out), (self.dep, dep)):
+                    if os.path.exists(path):
+                        os.remove(path)
+                    if t is not None:
+                        touch(path, t)
+                self.assertEqual(ra.up_to_date(self.cmd), expected)
 
 
 class RunTargets(unittest.TestCase):

@@ -145,9 +145,7 @@ class QuietPhase {
   void project(const GrooveRun& s, const double* u, const double* v, bool on_path);
   void set_dead_times(GrooveRun& s) const;
   // window_sums' and envelope's test (quiet_phase_window.cpp), and an edge's modal reach.
-  // With `unsure`, an edge whose sign the bounds cannot fix is flagged there instead of failing
-  // the test.
-  bool keeps_signs(double tau0, double tau_last, bool need_sums, std::vector<char>* unsure = nullptr);
+  bool keeps_signs(double tau0, double tau_last, bool need_sums);
   // window_sums' share of the flagged edges: their forces summed sample by sample.
   void unsure_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
   double edge_reach(const Edge& e) const;

@@ -97,12 +97,7 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
     double* qd = qds_.data() + s.offset;
     const RunBasis& d = *s.basis;
     if (step) {
-      for (int k = 0; k < s.n; ++k) {
-        const double a = q[k], b = qd[k];
-        const Transition& P = d.sample[k];
-        q[k] = P[0] * a + P[1] * b;
-        qd[k] = P[2] * a + P[3] * b;
-      }
+      d.step_sample(q, qd);
     } else {
       DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau,
                            [&](int k, const DampedMode& m, double e) {
@@ -153,11 +148,7 @@ void QuietPhase::friction_sums(double t, double& sum_abs, double& sum_signed) {
   for (std::size_t k = 0; k < segs_.size(); ++k) {
     const GrooveRun& s = segs_[k];
     double first = 0, last = 0;
-    if (tau <= s.sample_dead_tau) {
-      const RunBasis& d = *s.basis;
-      const double* q = qs_.data() + s.offset;
-      for (int j = 0; j < s.n; ++j) first += d.first_row[j] * q[j], last += d.last_row[j] * q[j];
-    }
+    if (tau <= s.sample_dead_tau) s.basis->end_rows(qs_.data() + s.offset, first, last);
     end_dots_[2 * k] = first, end_dots_[2 * k + 1] = last;
   }
   for (const Edge& e : edges_) {

@@ -27,12 +27,14 @@ namespace sb::event_detail {
 
 // Whether every contact block's force keeps its sign over tau0 .. tau_last (the tests above),
 // with the live segments' modes at tau0 in wq_, wp_ and bounds on their end rows' modal part from
-// then on in end_bound_. need_sums: the forces beside no groove are not tested (window_sums
-// splits the stretch at their crossings), and false when a mode has no closed-form sample sum. The
+// then on in end_bound_. need_sums (window_sums): the forces beside no groove are not tested
+// (window_sums splits the stretch at their crossings), an edge whose sign the bounds cannot fix
+// is flagged in unsure_ instead of failing the test, and false when a mode has no closed-form
+// sample sum. The
 // bounds come from the modes at tau0 itself, never from an earlier sample's, so whether a stretch
 // is taken depends on the phase and the stretch only, not on which samples were served before
 // it (an observer keeping the series gets the sums of one that does not).
-bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums, std::vector<char>* unsure) {
+bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
   if (!interior_ready_) {
     interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
     interior_ready_ = true;
@@ -59,14 +61,14 @@ bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums, std::
   }
   // Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at
   // both ends of the stretch (so everywhere between).
-  if (unsure) unsure->assign(edges_.size(), 0);
+  if (need_sums) unsure_.assign(edges_.size(), 0);
   for (std::size_t k = 0; k < edges_.size(); ++k) {
     const Edge& e = edges_[k];
     const double reach = edge_reach(e);
     const double f0 = e.fa + e.fb * tau0, sg = f0 >= 0 ? 1.0 : -1.0;
     if (sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach) continue;
-    if (!unsure) return false;
-    (*unsure)[k] = 1;
+    if (!need_sums) return false;
+    unsure_[k] = 1;
   }
   return true;
 }
@@ -82,7 +84,7 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   if (n <= 0) return false;
   auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
   const double tau0 = tau_of(k0);
-  if (!keeps_signs(tau0, tau_of(k0 + n - 1), true, &unsure_)) return false;
+  if (!keeps_signs(tau0, tau_of(k0 + n - 1), true)) return false;
   // Each live segment's end rows summed over its live samples (those with tau <= sample_dead_tau,
   // as friction_sums counts them).
   for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
@@ -174,15 +176,8 @@ void QuietPhase::unsure_sums(long k0, double dt, long n, double& sum_abs, double
     double* first = row_values_.data() + 2 * nn * static_cast<std::size_t>(slot_[sgi]);
     double* last = first + n;
     for (long j = 0; j < n && tau_of(k0 + j) <= s.sample_dead_tau; ++j) {
-      double f = 0, l = 0;
-      for (int k = 0; k < s.n; ++k) f += d.first_row[k] * q[k], l += d.last_row[k] * q[k];
-      first[j] = f, last[j] = l;
-      for (int k = 0; k < s.n; ++k) {
-        const double a = q[k], b = p[k];
-        const Transition& P = d.sample[k];
-        q[k] = P[0] * a + P[1] * b;
-        p[k] = P[2] * a + P[3] * b;
-      }
+      d.end_rows(q, first[j], last[j]);
+      d.step_sample(q, p);
     }
   }
   for (std::size_t k = 0; k < edges_.size(); ++k) {

@@ -37,6 +37,22 @@ struct RunBasis {
   // singular for it (|det| < 1e-6: an undamped mode that turns by a multiple of 2 pi).
   std::vector<std::array<double, 2>> sample_sum;
   int n() const { return static_cast<int>(modes.size()); }
+  // The modes (q, q') one sample spacing on, by their transitions (no transcendental calls).
+  void step_sample(double* q, double* qd) const {
+    const int m = n();
+    for (int k = 0; k < m; ++k) {
+      const double a = q[k], b = qd[k];
+      const Transition& P = sample[k];
+      q[k] = P[0] * a + P[1] * b;
+      qd[k] = P[2] * a + P[3] * b;
+    }
+  }
+  // The first and last rows' modal parts, Q's end rows . q, summed mode by mode.
+  void end_rows(const double* q, double& first, double& last) const {
+    first = last = 0;
+    const int m = n();
+    for (int k = 0; k < m; ++k) first += first_row[k] * q[k], last += last_row[k] * q[k];
+  }
 };
 
 class RunBases {
