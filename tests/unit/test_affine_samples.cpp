@@ -51,7 +51,7 @@ void serve(sb::FrictionObserver& o, Affine& f, long k0, long n, double dt, bool 
   long k = k0;
   while (k < k0 + n) {
     if (affine) {
-      const long used = o.sample_affine(f.c, f.s, k, dt, k0 + n - k, f.a.data(), f.b.data());
+      const long used = o.sample_affine(f.c, f.s, k, dt, k0 + n - k, sb::AffineForces{f.a.data(), f.b.data()});
       if (taken) *taken += used;
       if (used > 0) {
         k += used;

@@ -373,9 +373,9 @@ class OneByOne final : public sb::Observer {
  public:
   explicit OneByOne(sb::FrictionObserver& inner) : inner_(inner) {}
   void sample(const sb::Chain& c, const sb::State& s) override { inner_.sample(c, s); }
-  long sample_affine(const sb::Chain& c, const sb::State& s, long k0, double dt, long n, const double* a,
-                     const double* b) override {
-    return inner_.sample_affine(c, s, k0, dt, n, a, b);
+  long sample_affine(const sb::Chain& c, const sb::State& s, long k0, double dt, long n,
+                     const sb::AffineForces& f) override {
+    return inner_.sample_affine(c, s, k0, dt, n, f);
   }
   bool wants_stop() const override { return inner_.wants_stop(); }
   bool reads_groove_interiors() const override { return false; }

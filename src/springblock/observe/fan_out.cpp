@@ -42,8 +42,7 @@ long long FanOut::end_index(const View& v, long long k0, long long k_stop, doubl
   return hi;
 }
 
-long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, long n, const double* a,
-                           const double* b) {
+long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, long n, const AffineForces& f) {
   if (n <= 0) return 0;
   const long long k_stop = static_cast<long long>(k0) + n;  // one past the stretch
   auto t_of = [dt](long long k) { return static_cast<double>(k) * dt; };
@@ -53,7 +52,9 @@ long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, l
     const long long hi = end_index(v, k0, k_stop, dt), lo = std::max<long long>(k0, v.next_k);
     long long reached = lo;
     if (lo < hi) {
-      const long used = v.obs->sample_affine(c, s, static_cast<long>(lo), dt, static_cast<long>(hi - lo), a, b);
+      // The integrator's totals hold for a stretch from k0; a view that starts later sums its own.
+      const AffineForces g = lo == k0 ? f : AffineForces{f.a, f.b};
+      const long used = v.obs->sample_affine(c, s, static_cast<long>(lo), dt, static_cast<long>(hi - lo), g);
       if (used > 0) {
         v.next_k = lo + used;
         record(v, s);

@@ -40,8 +40,8 @@ class FanOut final : public Observer {
   FanOut(std::vector<View> views, double sample_dt, Within within);
 
   void sample(const Chain& chain, const State& state) override;
-  long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n, const double* a,
-                     const double* b) override;
+  long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n,
+                     const AffineForces& f) override;
   // A view is offered the block only as a run of its own would offer it: whole, and only if it
   // ends before the view's end; views that take it skip its samples, which the integrator then
   // serves one by one to the others if any declined.

@@ -46,6 +46,22 @@ SB_KERNEL_CLONES void friction_sums(int n, const double* __restrict f, const std
   sum_abs = (a[0] + a[1]) + (a[2] + a[3]);
   sum_signed = (g[0] + g[1]) + (g[2] + g[3]);
 }
+// The totals a stretch of affine samples from t_first needs (affine_totals.hpp), summed over the
+// contact blocks in block order, each force with its sign at t_first.
+AffineTotals block_order_totals(const std::vector<std::pair<int, int>>& contact_runs, const State& s,
+                                const double* a, const double* b, double t_first) {
+  AffineTotals sum;
+  sum.t_sign = std::numeric_limits<double>::infinity();
+  for (const auto& [lo, hi] : contact_runs)
+    for (int i = lo; i < hi; ++i) {
+      const double f0 = a[i] + b[i] * t_first, sg = f0 >= 0 ? 1.0 : -1.0;
+      if (b[i] != 0.0 && (b[i] > 0) != (sg > 0)) sum.t_sign = std::min(sum.t_sign, -a[i] / b[i]);
+      sum.A += sg * a[i], sum.B += sg * b[i];
+      sum.As += a[i], sum.Bs += b[i];
+      sum.n_sliding += s.dir[i] != 0;  // constant across the stretch: nothing switches in it
+    }
+  return sum;
+}
 }  // namespace
 
 void FrictionObserver::sample(const Chain& c, const State& s) {
@@ -112,25 +128,21 @@ void FrictionObserver::record(const Chain& c, const State& s, double mu, double 
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(s.t * 1e9), std::memory_order_relaxed);
 }
 
-long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, double dt, long n, const double* a,
-                                     const double* b) {
+long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, double dt, long n,
+                                     const AffineForces& f) {
   // A stretch feeds the statistics, the series and the stress snapshots alike (record_stretch),
   // so keeping mu(t) or taking snapshots never changes mu_s or mu_d (they were once served one
   // by one and differed in the last bits: FrictionObserver.KeepingTheSeriesChangesNoStatistic*).
   if (n <= 0 || contact_runs_.empty()) return 0;
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
   const double t_first = t_of(k0);
-  // The stretch ends before the first sample at which some block's force changes sign.
-  double A = 0, B = 0, As = 0, Bs = 0, t_sign = std::numeric_limits<double>::infinity();
-  int n_sliding = 0;  // constant across the stretch: nothing switches in it
-  for (const auto& [lo, hi] : contact_runs_)
-    for (int i = lo; i < hi; ++i) {
-      const double f0 = a[i] + b[i] * t_first, sg = f0 >= 0 ? 1.0 : -1.0;
-      if (b[i] != 0.0 && (b[i] > 0) != (sg > 0)) t_sign = std::min(t_sign, -a[i] / b[i]);
-      A += sg * a[i], B += sg * b[i];
-      As += a[i], Bs += b[i];
-      n_sliding += s.dir[i] != 0;
-    }
+  const double *a = f.a, *b = f.b;
+  // The stretch ends before the first sample at which some block's force changes sign. The
+  // totals over the contact blocks come from the integrator where it keeps them (the same signs,
+  // summed in another order), or are summed here in block order.
+  const AffineTotals sum = f.totals ? *f.totals : block_order_totals(contact_runs_, s, a, b, t_first);
+  const double A = sum.A, B = sum.B, As = sum.As, Bs = sum.Bs, t_sign = sum.t_sign;
+  const int n_sliding = sum.n_sliding;
   long m = n;
   while (m > 0 && t_of(k0 + m - 1) >= t_sign) --m;  // usually none: forces rarely change sign
   if (m <= 0) return 0;

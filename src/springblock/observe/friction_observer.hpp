@@ -48,8 +48,8 @@ class FrictionObserver final : public Observer {
   // mu(t) and mu_signed(t) are affine across such a stretch (up to the first sign change of a
   // block's force): the running maximum, the end of loading and the mu_d window sums are then
   // closed-form sums over the samples, O(1) per sample instead of O(contact blocks).
-  long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n, const double* a,
-                     const double* b) override;
+  long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n,
+                     const AffineForces& f) override;
   // After loading, mu_s is fixed and only the mu_d window's sums are still to come: a block of
   // samples before the window is taken without a value, one inside it as its sums, one across
   // the window's start is left to sample(). The series and snapshots of a block taken come from

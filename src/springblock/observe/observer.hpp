@@ -2,6 +2,7 @@
 // Observers see the chain at sample times; integrators call them and never compute
 // observables themselves (odeint's observer concept).
 #include "springblock/model.hpp"
+#include "springblock/observe/affine_totals.hpp"
 #include "springblock/state.hpp"
 
 namespace sb {
@@ -31,6 +32,16 @@ class SampleStretch {
   }
 };
 
+// The friction forces of a stretch of affine samples: f_i(t) = a[i] + b[i] t for every contact
+// block, and, where the integrator keeps them (totals != nullptr), the sums over the contact
+// blocks a stretch starting at its first sample needs (affine_totals.hpp), which an observer then
+// need not form itself.
+struct AffineForces {
+  const double* a;
+  const double* b;
+  const AffineTotals* totals = nullptr;
+};
+
 class Observer {
  public:
   virtual ~Observer() = default;
@@ -55,13 +66,12 @@ class Observer {
     return true;
   }
   // A stretch of samples at t_k = k dt, k = k0 .. k0 + n - 1, across which nothing switches and
-  // every contact block's friction force is affine, f_i(t) = a[i] + b[i] t (s carries s.dir and
-  // the slip counters; its positions are not those of any sample). An observer may take a
-  // prefix of the stretch at once and return its length; the integrator serves the others one
-  // by one with sample(). The default takes none.
-  virtual long sample_affine(const Chain&, const State&, long k0, double dt, long n, const double* a,
-                             const double* b) {
-    (void)k0, (void)dt, (void)n, (void)a, (void)b;
+  // every contact block's friction force is affine (f; s carries s.dir and the slip counters;
+  // its positions are not those of any sample). An observer may take a prefix of the stretch at
+  // once and return its length; the integrator serves the others one by one with sample(). The
+  // default takes none.
+  virtual long sample_affine(const Chain&, const State&, long k0, double dt, long n, const AffineForces& f) {
+    (void)k0, (void)dt, (void)n, (void)f;
     return 0;
   }
   // A block of samples t_k = k dt, k = k0 .. k0 + n - 1, inside which nothing switches, offered

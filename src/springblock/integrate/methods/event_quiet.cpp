@@ -188,7 +188,7 @@ bool EventRun::sample_affine_stretch(double t_next, bool& stopped) {
   sample_.t = clock_.next();
   stamp_sample();
   const long used = obs_.sample_affine(c_, sample_, static_cast<long>(k0), clock_.dt(), static_cast<long>(k_end - k0),
-                                       fa_.data(), fb_.data());
+                                       AffineForces{fa_.data(), fb_.data()});
   if (used <= 0) return false;
   s_.work.stretch_samples += used;
   took_samples(used, stopped);

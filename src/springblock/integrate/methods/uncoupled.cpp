@@ -6,7 +6,7 @@
 #include <string>
 
 #include "springblock/integrate/linear/damped_mode.hpp"
-#include "springblock/integrate/linear/mode_zero.hpp"
+#include "springblock/integrate/linear/mode_stop.hpp"
 #include "springblock/integrate/events/switching.hpp"
 #include "springblock/sample_schedule.hpp"
 #include "springblock/integrate/infinity.hpp"
@@ -26,7 +26,14 @@ struct Block {
 class Solver {
  public:
   Solver(const Chain& c, State& s, std::vector<double>* log)
-      : c_(c), s_(s), log_(log), b_(c.N), mode_{0.5 * c.gamma, c.K_s / c.m}, fa_(c.N, 0.0), fb_(c.N, 0.0) {}
+      : c_(c),
+        s_(s),
+        log_(log),
+        b_(c.N),
+        mode_{0.5 * c.gamma, c.K_s / c.m},
+        fa_(c.N, 0.0),
+        fb_(c.N, 0.0),
+        totals_(c) {}
 
   void run(double t_end, double sample_dt, Observer& obs);
 
@@ -65,12 +72,14 @@ class Solver {
   // Apply the stick/slip rules to block i at time t (after its event, or at the start).
   void apply_rules_at(int i, double t, bool event_here);
   void materialise(double t);
-  // Block i's friction force as a + b t until its next event: a stuck block's is its driving
-  // force K_s (v t - u_i), a sliding block's its constant kinetic friction (for sample_affine).
-  void update_friction(int i) {
+  // Block i's friction force as a + b t from time t until its next event: a stuck block's is its
+  // driving force K_s (v t - u_i), a sliding block's its constant kinetic friction (for
+  // sample_affine, with the chain's totals kept in totals_).
+  void update_friction(int i, double t) {
     if (!c_.contact[i]) return;
     if (s_.dir[i] == 0) fa_[i] = -c_.K_s * s_.u[i], fb_[i] = c_.K_s * c_.v_slider;
     else fa_[i] = s_.dir[i] * c_.f_kinetic[i], fb_[i] = 0.0;
+    totals_.set(i, fa_[i], fb_[i], s_.dir[i] != 0, t);
   }
 
   const Chain& c_;
@@ -79,6 +88,7 @@ class Solver {
   std::vector<Block> b_;
   DampedMode mode_;
   std::vector<double> fa_, fb_;  // friction force of each block: fa + fb t between its events
+  AffineForceTree totals_;       // their totals for a stretch of samples, updated per event
   long long evals_ = 0;
   double instant_ = -1;
   long long at_instant_ = 0;
@@ -101,49 +111,8 @@ double Solver::slip_time(int i, double t) const {
 
 double Solver::first_stop(int i) {
   const Block& b = b_[i];
-  const int d = s_.dir[i];
-  const double vs = c_.v_slider, gamma = c_.gamma, w2 = mode_.omega2;
-  // x'' follows the same mode equation: its initial value and rate.
-  const double a0 = -gamma * b.p0 - w2 * b.x0, j0 = -gamma * a0 - w2 * b.p0;
-  auto g = [&](double tau, double& x, double& xd) {
-    mode_.eval(b.x0, b.p0, tau, x, xd);
-    ++evals_;
-    return d * (vs + xd);
-  };
-  auto bisect = [&](double lo, double hi) {
-    double x, xd;
-    for (int it = 0; it < 200 && hi - lo > time_round_off(b.t_ref + hi); ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (g(mid, x, xd) > 0 ? lo : hi) = mid;
-    }
-    return b.t_ref + hi;
-  };
-  double lo = 0, x = b.x0, xd = b.p0;
-  for (int interval = 0; interval < 100000; ++interval) {
-    // Moving forward faster than the mode can ever swing back: no stop, ever. A swing that would
-    // reverse the velocity by less than 1e-12 v_s (a creeping block whose v only touches 0) is
-    // not a stop either.
-    if (d * vs > 0 && std::sqrt(xd * xd + w2 * x * x) <= d * vs * (1.0 + 1e-12)) return kInf;
-    double hi = next_zero(mode_, a0, j0, lo);
-    if (hi == kInf) {
-      // x' is monotone from here on, towards 0: g tends to d v_s.
-      if (d * vs > 0) return kInf;
-      double step = 1.0 / std::sqrt(w2 + mode_.alpha * mode_.alpha);
-      hi = lo + step;
-      while (g(hi, x, xd) > 0) {
-        lo = hi;
-        step *= 2;
-        hi = lo + step;
-      }
-      return bisect(lo, hi);
-    }
-    if (g(hi, x, xd) <= 0) return bisect(lo, hi);
-    // Without damping x' is periodic (two intervals per period) and its energy constant: no
-    // stop within the first period means none ever (a creeping block touching v = 0 at most).
-    if (mode_.alpha == 0.0 && interval >= 1) return kInf;
-    lo = hi;
-  }
-  throw std::runtime_error("uncoupled solver: no end to the sliding phase of block " + std::to_string(i));
+  const double tau = first_stop_tau(mode_, b.x0, b.p0, s_.dir[i], c_.v_slider, b.t_ref, evals_);
+  return tau == kInf ? kInf : b.t_ref + tau;
 }
 
 void Solver::schedule(int i, double t_next) {
@@ -176,7 +145,7 @@ void Solver::apply_rules_at(int i, double t, bool event_here) {
     at_instant_ += made;
     s_.switches += made;
     if (made > 0 && log_ && (log_->empty() || log_->back() != t)) log_->push_back(t);
-    update_friction(i);
+    update_friction(i, t);
   }
   WorkTimer timer(s_.work, s_.work.event_location_s);
   if (s_.dir[i] != 0) {
@@ -203,7 +172,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
     if (s_.dir[i] != 0) {
       start_moving(i, t0, s_.dir[i] * c_.f_kinetic[i]);
       schedule(i, first_stop(i));
-      update_friction(i);
+      update_friction(i, t0);
     } else {
       apply_rules_at(i, t0, false);
     }
@@ -248,8 +217,9 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       const long long k = clock.index(), k_end = clock.first_at_or_after(t_stop);
       const long used = [&] {
         WorkTimer timer(s_.work, s_.work.sampling_s);
-        return obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k), fa_.data(),
-                                 fb_.data());
+        const AffineTotals& totals = totals_.at(static_cast<double>(k) * sample_dt);
+        return obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k),
+                                 AffineForces{fa_.data(), fb_.data(), &totals});
       }();
       if (used > 0) {
         s_.work.stretch_samples += used;

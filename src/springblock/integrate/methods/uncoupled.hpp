@@ -11,8 +11,9 @@
 //            closed form at any time.
 // A sliding block stops at the first tau > 0 with dir (v_s + x'(tau)) <= 0. x' is monotone
 // between consecutive zeros of x'' (itself a damped-mode trajectory, whose zeros are closed form),
-// so each such interval holds at most one root, found by bisection to round-off in t; no grid and
-// no grazing bound are needed. If the block moves forward (dir v_s > 0) and the mode's energy
+// so each such interval holds at most one root, found to round-off in t by Newton steps kept
+// inside the interval (the slope x'' comes with every evaluation); no grid and no grazing bound
+// are needed. If the block moves forward (dir v_s > 0) and the mode's energy
 // bound sqrt(x'^2 + omega^2 x^2) (never increasing) is below v_s (1 + 1e-12), it never stops: a
 // creeping block (mu_d clipped to mu_s) has no further event at all, also without damping, where
 // its velocity touches 0 once per period. A release whose pull falls short of kinetic friction

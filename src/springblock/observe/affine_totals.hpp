@@ -1,0 +1,58 @@
+#pragma once
+// The totals a stretch of affine samples needs (FrictionObserver::sample_affine), kept up to date
+// block by block instead of summed over the chain at every stretch.
+//
+// Between two events of a chain without internal springs every contact block's friction force is
+// affine, f_i(t) = a_i + b_i t, and a stretch of samples starting at t_first needs, over the
+// contact blocks, the sums of s_i a_i and s_i b_i with s_i the sign of f_i(t_first), the sums of
+// a_i and b_i, the number sliding, and the earliest time at which some f_i changes sign. Summed
+// afresh that is O(contact blocks) per stretch, and a stretch ends at every event of any block:
+// in fig2's K_int = 0 chains it was 39 % of the run. Here the blocks are the leaves of a binary
+// tree whose nodes hold their subtree's totals; an event changes one leaf and the nodes above it
+// (O(log N)). A leaf's sign is taken when it is set and taken again, by the same expression,
+// whenever the stretch starts at or after the time its force was due to change sign.
+//
+// The totals are sums in the tree's order, not in block order: they differ from the chain-order
+// sums in the last bits (the tests compare them to round-off), and depend only on the leaves'
+// current values, not on the history of updates (no drift, the same doubles whatever the order
+// of the events that set them).
+#include <vector>
+
+#include "springblock/model.hpp"
+
+namespace sb {
+
+struct AffineTotals {
+  double A = 0, B = 0;    // sum of s_i a_i and s_i b_i: sum_i |f_i(t)| = A + B t in the stretch
+  double As = 0, Bs = 0;  // sum of a_i and b_i: sum_i f_i(t) = As + Bs t
+  double t_sign = 0;      // the earliest time some f_i changes sign (+inf if none)
+  int n_sliding = 0;      // contact blocks sliding
+};
+
+class AffineForceTree {
+ public:
+  explicit AffineForceTree(const Chain& c);
+  // Block i's force is a + b t from now on (sliding: whether it slides); its sign is taken at t.
+  // Blocks without contact are ignored.
+  void set(int i, double a, double b, bool sliding, double t);
+  // The totals for a stretch starting at t_first (t_first at or after every set's t).
+  const AffineTotals& at(double t_first);
+
+ private:
+  struct Leaf {
+    double a = 0, b = 0;
+    bool sliding = false;
+  };
+  static void take_sign(const Leaf& f, double t, AffineTotals& node);
+  void combine(int node);
+  // Takes again, at t, the sign of every leaf under `node` whose force was due to change sign by
+  // `due`.
+  void refresh(int node, double due, double t);
+
+  int size_ = 1;                // leaves in the tree (a power of two)
+  std::vector<int> leaf_of_;    // block -> leaf index (-1: no contact)
+  std::vector<Leaf> leaves_;    // per leaf
+  std::vector<AffineTotals> node_;  // 1-based heap order; leaf k is node size_ + k
+};
+
+}  // namespace sb
