@@ -131,7 +131,9 @@ double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans
       if (hermite_positive(f.g0, f.d0, f.g1, f.d1, h, f.M4)) continue;
     }
     ++polynomial_searches;
-    root_[k] = exact_root(c, s, spans, active, f, h);
+    // A root later than best + window h can neither be the event nor join it (the final best is
+    // no later than this one): exact_root does not refine it.
+    root_[k] = exact_root(c, s, spans, active, f, h, best + window * h);
     best = std::min(best, root_[k]);
   }
   hits_.clear();
@@ -148,7 +150,7 @@ void SpanScreen::accept() {
 // g over the step as a polynomial in tau = t - s.t: the rows' Taylor polynomials combined as the
 // cheap form combines their values.
 double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, const Fn& f,
-                              double h) {
+                              double h, double after) {
   double row[D + 2], g[D + 1];
   const int j = f.block;
   const double t0 = s.t;
@@ -156,7 +158,7 @@ double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& s
     spans.row_taylor(j, row);
     for (int k = 0; k <= D; ++k) g[k] = f.dir * ((k + 1) * row[k + 1]);
     g[0] += eps_v_;
-    return poly_root(g, t0, h);
+    return poly_root(g, t0, h, after);
   }
   double F[D + 1] = {};
   const double uj = s.u[j];
@@ -182,21 +184,33 @@ double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& s
   for (double sense : {1.0, -1.0}) {
     for (int k = 0; k <= D; ++k) g[k] = -sense * F[k];
     g[0] += fs;
-    root = std::min(root, poly_root(g, t0, h));
+    root = std::min(root, poly_root(g, t0, h, std::min(after, root)));
   }
   return root;
 }
 
-double SpanScreen::poly_root(const double* g, double t0, double h) const {
+double SpanScreen::poly_root(const double* g, double t0, double h, double after) const {
   // g >= g_0 - sum_j |g_j| h^j on [0, h]. Where that is positive by far more than round-off,
   // every Bernstein coefficient (g_0 plus weights in [0, 1] times the others) is positive too,
   // so first_bracket would find nothing: the same answer without the change of basis.
+  // The caller has no use for a root after `after`. The same test on [0, past], past a little
+  // beyond it (a few times the refinement's final width, so that no root it would put at or before
+  // `after` is missed), finds most of those without the change of basis either.
+  const double past = after + 4.0 * time_round_off(t0 + after);
+  if (past < h) {
+    double reach = 0, tj = 1.0;
+    for (int j = 1; j <= D; ++j) tj *= past, reach += std::fabs(g[j] * tj);
+    if (g[0] - reach > 1e-10 * (g[0] + reach)) return kInf;
+  }
   double spread = 0, hj = 1.0;
   for (int j = 1; j <= D; ++j) hj *= h, spread += std::fabs(g[j] * hj);
   if (g[0] - spread > 1e-10 * (g[0] + spread)) return kInf;
   double lo, hi;
   if (!bern_.first_bracket(g, h, lo, hi)) return kInf;
   auto p = [&](double x) { return estrin<D>(g, x); };  // estrin.hpp: latency, not flops
+  // The bracket holds one sign change of g, so g > 0 at `past` puts the root after it, and one
+  // evaluation replaces the refinement (~9).
+  if (past > lo && past < hi && p(past) > 0) return kInf;
   // At the step's start the polynomial is g_0, as its evaluation there would give (every term
   // but the first vanishes; only the sign of a zero could differ, which no comparison sees).
   const double p_lo = lo == 0.0 && std::isfinite(g[0] + spread) ? g[0] : p(lo);

@@ -64,10 +64,11 @@ class SpanScreen {
   // g's cheap form at the step's start (end = false) or end, and its slope (slope = true).
   double cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active, const Fn& f,
                double t, bool end, bool slope = false) const;
-  // The first root of f in [0, h] from its polynomial (+inf if none).
+  // The first root of f in [0, h] from its polynomial (+inf if none, or if it is surely later than
+  // `after`: such a root is not refined).
   double exact_root(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, const Fn& f,
-                    double h);
-  double poly_root(const double* g, double t0, double h) const;
+                    double h, double after);
+  double poly_root(const double* g, double t0, double h, double after) const;
 
   double K_int_, K_s_, v_, eps_v_;
   std::vector<Fn> fns_;
