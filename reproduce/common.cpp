@@ -194,8 +194,21 @@ nlohmann::json borrowed_record(const Context& ctx, const LabelledScene& ls, cons
 }
 }  // namespace
 
-LabelledScene::Borrow find_borrowable(const Context& ctx, const std::vector<std::string>& targets,
-                                      const sb::Scene& scene) {
+std::vector<std::string> given_inputs(const Context& ctx, const std::vector<std::string>& targets) {
+  std::vector<std::string> given;
+  for (const auto& t : targets) {
+    try {
+      input_document(ctx, t);
+      given.push_back(t);
+    } catch (const sb::InputError&) {
+    }
+  }
+  return given;
+}
+
+namespace {
+LabelledScene::Borrow find_record(const Context& ctx, const std::vector<std::string>& targets, const sb::Scene& scene,
+                                  const std::uint64_t* seed) {
   // A random surface draws a fresh mask per repetition: no mask string stands for it.
   if (scene.pattern.kind == sb::SurfaceKind::Random) return {};
   nlohmann::json mine = scene;
@@ -203,11 +216,27 @@ LabelledScene::Borrow find_borrowable(const Context& ctx, const std::vector<std:
   const std::string mask = mask_text(scene);
   for (const auto& t : targets) {
     const auto& doc = input_document(ctx, t);
-    for (const auto& rec : doc.at("scenes"))
-      if (rec.value("contact_mask", "") == mask && definition_without_seed(rec.at("result").at("scene")) == mine)
+    for (const auto& rec : doc.at("scenes")) {
+      const auto& def = rec.at("result").at("scene");
+      if (seed && !(def.contains("seed") && def.at("seed").is_number_unsigned() &&
+                    def.at("seed").get<std::uint64_t>() == *seed))
+        continue;
+      if (rec.value("contact_mask", "") == mask && definition_without_seed(def) == mine)
         return {t, rec.at("id").get<std::string>(), false};
+    }
   }
   return {};
+}
+}  // namespace
+
+LabelledScene::Borrow find_borrowable(const Context& ctx, const std::vector<std::string>& targets,
+                                      const sb::Scene& scene) {
+  return find_record(ctx, targets, scene, nullptr);
+}
+
+LabelledScene::Borrow find_borrowable(const Context& ctx, const std::vector<std::string>& targets,
+                                      const sb::Scene& scene, std::uint64_t seed) {
+  return find_record(ctx, targets, scene, &seed);
 }
 
 PatternShape pattern_shape(const std::string& spec) {

@@ -105,12 +105,20 @@ nlohmann::json read_json(const std::string& path);  // throws std::runtime_error
 // The document stays cached for the life of the process: hold the reference, not a temporary's part.
 const nlohmann::json& input_document(const Context& ctx, const std::string& target);  // throws InputError
 
+// Those of `targets` whose document was given with --input (for a driver that reads another
+// target's records where they are at hand and simulates the same thing itself otherwise).
+std::vector<std::string> given_inputs(const Context& ctx, const std::vector<std::string>& targets);
+
 // The record of another --input target that simulated the same thing as `scene`: every field of
 // the scene definition equal except the seed (ours derives from our own scene id), and the same
 // contact mask (so periodic:6,6 and hierarchical:6 match when they lay out the same surface).
 // Returns {target, id}, or an empty target when none of the listed targets has one.
 LabelledScene::Borrow find_borrowable(const Context& ctx, const std::vector<std::string>& targets,
                                       const sb::Scene& scene);
+// The same, but only a record whose seed is `seed` as well: the very simulation the caller would
+// run itself (same definition, same draws), so borrowing it changes none of its numbers.
+LabelledScene::Borrow find_borrowable(const Context& ctx, const std::vector<std::string>& targets,
+                                      const sb::Scene& scene, std::uint64_t seed);
 
 // Groove sizes of a pattern spec: periodic:NP,NG -> {NG} (and n_p), hierarchical:G1,G2 -> {G1,G2}.
 struct PatternShape {

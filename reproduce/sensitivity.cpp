@@ -9,8 +9,10 @@ choice at a time around the baseline (mu_s rule all_slipped, mu_d_skip 0.25 t0, 
 the method's default accuracy): the drop rule for mu_s at thresholds 0.05, 0.02 and 0.1;
 mu_d_skip 0 and 0.5 t0; duration 3 t0 and
 6 t0; and the integrator accuracy tightened (rk4: dt 5e-8 s instead of 1e-7 s; event: tol 1e-10,
-two decades below the default 1e-8). Every variant uses the same seed, so the repetitions see the same micro
-coefficients and the differences to the baseline are paired, free of draw-to-draw noise.
+two decades below the default 1e-8). Every variant of a surface uses the seed its table row has
+in its table, so the repetitions see the same micro coefficients and the differences to the
+baseline are paired, free of draw-to-draw noise; the baseline is then the row itself, and
+tab_pat0 and tab_pat1 read those rows from here rather than simulate them again.
 Checked: the document lists, per surface and choice, the shift of mu_s and mu_d from the
 baseline; the report quotes them next to the z values.
 Cost: the rule and run-length variants of a surface see one trajectory, so sb::run_ensembles
@@ -48,8 +50,11 @@ int main(int argc, char** argv) {
         for (const auto& s : surfaces)
           for (const auto& v : variants) {
             repro::LabelledScene ls;
-            ls.shared_seed = true;
             ls.scene = ctx.chain(s.N, s.length, s.pattern);
+            // Every variant of a surface with the draws of its table row (the seed the row has
+            // in its table): the variants stay paired, and the table reads its row from here.
+            ls.scene.seed = repro::scene_seed(ctx.opt.seed, s.row);
+            ls.shared_seed = true;
             // The baseline is the paper-length run whatever the tier, so the duration
             // variants bracket it.
             repro::set(ls.scene, "duration", "4t0");

@@ -12,5 +12,7 @@ C28, C31 on our values.
 #include "table_scenes.hpp"
 
 int main(int argc, char** argv) {
-  return repro::run_target(argc, argv, "tab_pat1", "table tpat1: hierarchical patterns, N=120", repro::table_scenes);
+  // The rows the sensitivity study runs (to 6 t0, with the rows' own draws) are read from it.
+  return repro::run_target(argc, argv, "tab_pat1", "table tpat1: hierarchical patterns, N=120",
+                           [](const repro::Context& ctx) { return repro::table_scenes_reading(ctx, {"sensitivity"}); });
 }

@@ -37,4 +37,14 @@ std::vector<LabelledScene> table_scenes(const Context& ctx) {
   return out;
 }
 
+std::vector<LabelledScene> table_scenes_reading(const Context& ctx, const std::vector<std::string>& sources) {
+  auto out = table_scenes(ctx);
+  // Only the sources given with --input (make gives them all): without one, a row runs here,
+  // which is the same simulation.
+  const auto given = given_inputs(ctx, sources);
+  if (given.empty()) return out;
+  for (auto& s : out) s.borrow = find_borrowable(ctx, given, s.scene, scene_seed(ctx.opt.seed, s.id));
+  return out;
+}
+
 }  // namespace repro

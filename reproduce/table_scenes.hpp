@@ -11,5 +11,9 @@ namespace repro {
 // all three appendix tables).
 std::vector<TableRow> table_rows(const Context& ctx);
 std::vector<LabelledScene> table_scenes(const Context& ctx);
+// The same, with every row that one of `sources` ran with the row's own draws read from its
+// document (where given with --input; make gives it) instead of run again: the same simulation,
+// so the same numbers.
+std::vector<LabelledScene> table_scenes_reading(const Context& ctx, const std::vector<std::string>& sources);
 
 }  // namespace repro
