@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "forwarding_observer.hpp"
 #include "hand_chain.hpp"
 #include "springblock/integrate/methods/event_driven.hpp"
 #include "springblock/observe/friction_observer.hpp"
@@ -88,21 +89,15 @@ TEST(AffineTotals, EqualTheBlockOrderSumsAcrossSignChanges) {
 
 // Forwards to a friction observer without the integrator's totals, so it sums every stretch over
 // the chain in block order, as before the tree.
-class SumsItself final : public sb::Observer {
+class SumsItself final : public sbtest::Forwarding {
  public:
-  explicit SumsItself(sb::FrictionObserver& inner) : inner_(inner) {}
-  void sample(const sb::Chain& c, const sb::State& s) override { inner_.sample(c, s); }
+  using Forwarding::Forwarding;
   long sample_affine(const sb::Chain& c, const sb::State& s, long k0, double dt, long n,
                      const sb::AffineForces& f) override {
     with_totals += f.totals != nullptr;
     return inner_.sample_affine(c, s, k0, dt, n, sb::AffineForces{f.a, f.b});
   }
-  bool wants_stop() const override { return inner_.wants_stop(); }
-  bool reads_only_friction() const override { return true; }
   long with_totals = 0;
-
- private:
-  sb::FrictionObserver& inner_;
 };
 
 // A K_int = 0 chain of 40 blocks with grooves run by the exact per-block solver: mu_s, its time

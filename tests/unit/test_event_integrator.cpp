@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "forwarding_observer.hpp"
 #include "hand_chain.hpp"
 #include "springblock/integrate/linear/quiet_phase.hpp"
 #include "springblock/integrate/methods/rk4.hpp"
@@ -369,22 +370,7 @@ TEST(EventIntegrator, SampleScalesChangeNoResult) {
 
 // The same friction observer declining every block of quiet-phase samples offered as sums, so
 // that each of them is served one by one.
-class OneByOne final : public sb::Observer {
- public:
-  explicit OneByOne(sb::FrictionObserver& inner) : inner_(inner) {}
-  void sample(const sb::Chain& c, const sb::State& s) override { inner_.sample(c, s); }
-  long sample_affine(const sb::Chain& c, const sb::State& s, long k0, double dt, long n,
-                     const sb::AffineForces& f) override {
-    return inner_.sample_affine(c, s, k0, dt, n, f);
-  }
-  bool wants_stop() const override { return inner_.wants_stop(); }
-  bool reads_groove_interiors() const override { return false; }
-  bool reads_only_friction() const override { return true; }
-  bool needs_positions_at(double t) const override { return inner_.needs_positions_at(t); }
-
- private:
-  sb::FrictionObserver& inner_;
-};
+using OneByOne = sbtest::Forwarding;
 
 TEST(EventIntegrator, SummedSampleBlocksEqualTheSamplesOneByOne) {
   // During loading, stretches of quiet-phase samples are taken from bounds on the friction sums

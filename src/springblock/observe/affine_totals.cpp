@@ -10,49 +10,41 @@ namespace {
 constexpr double kNever = std::numeric_limits<double>::infinity();
 }
 
-AffineForceTree::AffineForceTree(const Chain& c) : leaf_of_(c.N, -1) {
+AffineTotals affine_share(double a, double b, bool sliding, double t) {
+  const double sg = a + b * t >= 0 ? 1.0 : -1.0;
+  return {sg * a, sg * b, a, b, b != 0.0 && (b > 0) != (sg > 0) ? -a / b : kNever, sliding ? 1 : 0};
+}
+
+AffineTotals operator+(const AffineTotals& x, const AffineTotals& y) {
+  return {x.A + y.A, x.B + y.B, x.As + y.As, x.Bs + y.Bs, std::min(x.t_sign, y.t_sign), x.n_sliding + y.n_sliding};
+}
+
+AffineForceTree::AffineForceTree(const Chain& c) : leaf_of_(c.N, -1), a_(c.N, 0.0), b_(c.N, 0.0), sliding_(c.N, 0) {
   int n = 0;
   for (int i = 0; i < c.N; ++i)
     if (c.contact[i]) leaf_of_[i] = n++;
   while (size_ < n) size_ *= 2;
-  leaves_.assign(size_, Leaf{});
+  block_of_.assign(size_, -1);
+  for (int i = 0; i < c.N; ++i)
+    if (leaf_of_[i] >= 0) block_of_[leaf_of_[i]] = i;
   node_.assign(2 * size_, AffineTotals{});
   for (auto& x : node_) x.t_sign = kNever;
-}
-
-// A leaf's totals with its sign at t, as FrictionObserver::sample_affine takes it for a stretch
-// starting at t: the sign of a + b t (0 counts as positive), and the time the force reaches zero
-// if it is heading there.
-void AffineForceTree::take_sign(const Leaf& f, double t, AffineTotals& node) {
-  const double sg = f.a + f.b * t >= 0 ? 1.0 : -1.0;
-  node.A = sg * f.a, node.B = sg * f.b;
-  node.As = f.a, node.Bs = f.b;
-  node.t_sign = f.b != 0.0 && (f.b > 0) != (sg > 0) ? -f.a / f.b : kNever;
-  node.n_sliding = f.sliding ? 1 : 0;
-}
-
-void AffineForceTree::combine(int k) {
-  const AffineTotals &l = node_[2 * k], &r = node_[2 * k + 1];
-  AffineTotals& x = node_[k];
-  x.A = l.A + r.A, x.B = l.B + r.B;
-  x.As = l.As + r.As, x.Bs = l.Bs + r.Bs;
-  x.t_sign = std::min(l.t_sign, r.t_sign);
-  x.n_sliding = l.n_sliding + r.n_sliding;
 }
 
 void AffineForceTree::set(int i, double a, double b, bool sliding, double t) {
   const int leaf = leaf_of_[i];
   if (leaf < 0) return;
-  leaves_[leaf] = {a, b, sliding};
+  a_[i] = a, b_[i] = b, sliding_[i] = sliding;
   int k = size_ + leaf;
-  take_sign(leaves_[leaf], t, node_[k]);
+  node_[k] = affine_share(a, b, sliding, t);
   for (k /= 2; k >= 1; k /= 2) combine(k);
 }
 
 void AffineForceTree::refresh(int k, double due, double t) {
   if (!(node_[k].t_sign <= due)) return;
   if (k >= size_) {
-    take_sign(leaves_[k - size_], t, node_[k]);
+    const int i = block_of_[k - size_];  // a padding leaf never has a sign change due
+    node_[k] = affine_share(a_[i], b_[i], sliding_[i] != 0, t);
     return;
   }
   refresh(2 * k, due, t);

@@ -16,6 +16,7 @@
 // sums in the last bits (the tests compare them to round-off), and depend only on the leaves'
 // current values, not on the history of updates (no drift, the same doubles whatever the order
 // of the events that set them).
+#include <cstdint>
 #include <vector>
 
 #include "springblock/model.hpp"
@@ -29,30 +30,37 @@ struct AffineTotals {
   int n_sliding = 0;      // contact blocks sliding
 };
 
+// One force a + b t's share of the totals for a stretch starting at t: its sign there (0 counts
+// as positive), and the time it reaches zero if it is heading there (+inf otherwise). The one rule
+// both the tree and a sum over the chain (FrictionObserver) apply.
+AffineTotals affine_share(double a, double b, bool sliding, double t);
+// x + y: the sums added, the earlier sign change, the sliding counts added.
+AffineTotals operator+(const AffineTotals& x, const AffineTotals& y);
+
 class AffineForceTree {
  public:
   explicit AffineForceTree(const Chain& c);
   // Block i's force is a + b t from now on (sliding: whether it slides); its sign is taken at t.
-  // Blocks without contact are ignored.
+  // Blocks without contact are ignored (their a and b stay 0).
   void set(int i, double a, double b, bool sliding, double t);
   // The totals for a stretch starting at t_first (t_first at or after every set's t).
   const AffineTotals& at(double t_first);
+  // Every block's a and b (0 for blocks without contact): the forces themselves, by block.
+  const double* a() const { return a_.data(); }
+  const double* b() const { return b_.data(); }
 
  private:
-  struct Leaf {
-    double a = 0, b = 0;
-    bool sliding = false;
-  };
-  static void take_sign(const Leaf& f, double t, AffineTotals& node);
-  void combine(int node);
+  void combine(int node) { node_[node] = node_[2 * node] + node_[2 * node + 1]; }
   // Takes again, at t, the sign of every leaf under `node` whose force was due to change sign by
   // `due`.
   void refresh(int node, double due, double t);
 
-  int size_ = 1;                // leaves in the tree (a power of two)
-  std::vector<int> leaf_of_;    // block -> leaf index (-1: no contact)
-  std::vector<Leaf> leaves_;    // per leaf
-  std::vector<AffineTotals> node_;  // 1-based heap order; leaf k is node size_ + k
+  int size_ = 1;                       // leaves in the tree (a power of two)
+  std::vector<int> leaf_of_;           // block -> leaf index (-1: no contact)
+  std::vector<int> block_of_;          // leaf -> block (-1: padding)
+  std::vector<double> a_, b_;          // per block
+  std::vector<std::uint8_t> sliding_;  // per block
+  std::vector<AffineTotals> node_;     // 1-based heap order; leaf k is node size_ + k
 };
 
 }  // namespace sb

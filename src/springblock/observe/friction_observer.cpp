@@ -53,13 +53,8 @@ AffineTotals block_order_totals(const std::vector<std::pair<int, int>>& contact_
   AffineTotals sum;
   sum.t_sign = std::numeric_limits<double>::infinity();
   for (const auto& [lo, hi] : contact_runs)
-    for (int i = lo; i < hi; ++i) {
-      const double f0 = a[i] + b[i] * t_first, sg = f0 >= 0 ? 1.0 : -1.0;
-      if (b[i] != 0.0 && (b[i] > 0) != (sg > 0)) sum.t_sign = std::min(sum.t_sign, -a[i] / b[i]);
-      sum.A += sg * a[i], sum.B += sg * b[i];
-      sum.As += a[i], sum.Bs += b[i];
-      sum.n_sliding += s.dir[i] != 0;  // constant across the stretch: nothing switches in it
-    }
+    for (int i = lo; i < hi; ++i)  // s.dir is constant across the stretch: nothing switches in it
+      sum = sum + affine_share(a[i], b[i], s.dir[i] != 0, t_first);
   return sum;
 }
 }  // namespace

@@ -10,8 +10,8 @@
 // bisection whenever the bracket has not halved over the last two evaluations, unless |g| fell
 // eightfold over them (at most 8 points in a row). That exception is since 2026-11-26: regula
 // falsi closing in on a root from one side leaves the far end put, so the bracket does not halve
-// although every point gains digits, and the bisections it forced cost a third of the points
-// (the screen's polynomials: 9 to 10 evaluations per refinement -> 7 to 7.5). The result has
+// although every point gains digits, and the bisections it forced were wasted points (the
+// screen's polynomials: 8.8 to 10.0 evaluations per refined root -> 6.9 to 7.5). The result has
 // what a bisection's has: g(result) <= 0 (or NaN) within the final width of a point with g > 0.
 // On the continuous extension of a Dormand-Prince step, which is a quartic, it takes ~7
 // evaluations per event where a bisection to round-off in t took ~29 (measured on smooth and
@@ -78,8 +78,8 @@ double first_root(G g, double lo, double g_lo, double hi, double g_hi, Width wid
 // keeps the bracket at every iteration. (Until 2026-11-26 one Newton step that did not halve it
 // was enough: a Newton point from the far side of a root falls short of it by its curvature,
 // onto the near side, and the next, which would have closed the bracket, was then regula
-// falsi's; EdgeMarch's roots took ~11 evaluations, now ~4.5.) The bracket stops when no wider than width(hi); the result is the
-// crossed end hi. (x, gx, dgx): an evaluation inside the bracket to start from (x = +inf: none;
+// falsi's; EdgeMarch's roots took ~11 evaluations, now ~4.5.) The bracket stops when no wider
+// than width(hi); the result is the crossed end hi. (x, gx, dgx): an evaluation inside the bracket to start from (x = +inf: none;
 // the first point is then regula falsi's). EdgeMarch's searches use it; on the exact stepper's
 // event polynomials, where the slope costs a second polynomial, it measured 1.04 to 1.12 times
 // first_root's time per slip start (paper/choices.md), so the screen keeps first_root.

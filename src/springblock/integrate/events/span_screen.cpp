@@ -196,15 +196,16 @@ double SpanScreen::poly_root(const double* g, double t0, double h, double after)
   // The caller has no use for a root after `after`. The same test on [0, past], past a little
   // beyond it (a few times the refinement's final width, so that no root it would put at or before
   // `after` is missed), finds most of those without the change of basis either.
+  auto spread_to = [&](double tau) {
+    double sum = 0, tj = 1.0;
+    for (int j = 1; j <= D; ++j) tj *= tau, sum += std::fabs(g[j] * tj);
+    return sum;
+  };
+  auto clear = [&](double spread) { return g[0] - spread > 1e-10 * (g[0] + spread); };
   const double past = after + 4.0 * time_round_off(t0 + after);
-  if (past < h) {
-    double reach = 0, tj = 1.0;
-    for (int j = 1; j <= D; ++j) tj *= past, reach += std::fabs(g[j] * tj);
-    if (g[0] - reach > 1e-10 * (g[0] + reach)) return kInf;
-  }
-  double spread = 0, hj = 1.0;
-  for (int j = 1; j <= D; ++j) hj *= h, spread += std::fabs(g[j] * hj);
-  if (g[0] - spread > 1e-10 * (g[0] + spread)) return kInf;
+  if (past < h && clear(spread_to(past))) return kInf;
+  const double spread = spread_to(h);
+  if (clear(spread)) return kInf;
   double lo, hi;
   if (!bern_.first_bracket(g, h, lo, hi)) return kInf;
   auto p = [&](double x) { return estrin<D>(g, x); };  // estrin.hpp: latency, not flops

@@ -27,15 +27,16 @@ double first_stop_tau(const DampedMode& mode, double x0, double p0, int dir, dou
   // first_root_newton: g' = d x'' comes with every evaluation (x'' = -gamma x' - omega^2 x), so
   // Newton's method converges in a few points where a bisection took ~45 (each an exponential, a
   // sine and a cosine). It starts from hi, the end of an interval between zeros of x''.
+  auto slope = [&](double x, double xd) { return d * (-gamma * xd - w2 * x); };
   auto refine = [&](double lo, double g_lo, double hi, double x_hi, double xd_hi) {
     auto gd = [&](double tau, double& gv, double& dg) {
       double x, xd;
       gv = g(tau, x, xd);
-      dg = d * (-gamma * xd - w2 * x);
+      dg = slope(x, xd);
     };
     const double g_hi = d * (vs + xd_hi);
     return first_root_newton(gd, lo, g_lo, hi, g_hi, [&](double h) { return time_round_off(t_ref + h); }, hi, g_hi,
-                             d * (-gamma * xd_hi - w2 * x_hi));
+                             slope(x_hi, xd_hi));
   };
   double lo = 0, x = x0, xd = p0, g_lo = d * (vs + p0);
   for (int interval = 0; interval < 100000; ++interval) {

@@ -31,9 +31,7 @@ class Solver {
         log_(log),
         b_(c.N),
         mode_{0.5 * c.gamma, c.K_s / c.m},
-        fa_(c.N, 0.0),
-        fb_(c.N, 0.0),
-        totals_(c) {}
+        forces_(c) {}
 
   void run(double t_end, double sample_dt, Observer& obs);
 
@@ -72,14 +70,12 @@ class Solver {
   // Apply the stick/slip rules to block i at time t (after its event, or at the start).
   void apply_rules_at(int i, double t, bool event_here);
   void materialise(double t);
-  // Block i's friction force as a + b t from time t until its next event: a stuck block's is its
-  // driving force K_s (v t - u_i), a sliding block's its constant kinetic friction (for
-  // sample_affine, with the chain's totals kept in totals_).
+  // Block i's friction force as a + b t from time t until its next event (for sample_affine,
+  // with the chain's totals): a stuck block's is its driving force K_s (v t - u_i), a sliding
+  // block's its constant kinetic friction.
   void update_friction(int i, double t) {
-    if (!c_.contact[i]) return;
-    if (s_.dir[i] == 0) fa_[i] = -c_.K_s * s_.u[i], fb_[i] = c_.K_s * c_.v_slider;
-    else fa_[i] = s_.dir[i] * c_.f_kinetic[i], fb_[i] = 0.0;
-    totals_.set(i, fa_[i], fb_[i], s_.dir[i] != 0, t);
+    if (s_.dir[i] == 0) forces_.set(i, -c_.K_s * s_.u[i], c_.K_s * c_.v_slider, false, t);
+    else forces_.set(i, s_.dir[i] * c_.f_kinetic[i], 0.0, true, t);
   }
 
   const Chain& c_;
@@ -87,8 +83,7 @@ class Solver {
   std::vector<double>* log_;
   std::vector<Block> b_;
   DampedMode mode_;
-  std::vector<double> fa_, fb_;  // friction force of each block: fa + fb t between its events
-  AffineForceTree totals_;       // their totals for a stretch of samples, updated per event
+  AffineForceTree forces_;  // each block's friction force a + b t between its events, and their totals
   long long evals_ = 0;
   double instant_ = -1;
   long long at_instant_ = 0;
@@ -217,9 +212,9 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       const long long k = clock.index(), k_end = clock.first_at_or_after(t_stop);
       const long used = [&] {
         WorkTimer timer(s_.work, s_.work.sampling_s);
-        const AffineTotals& totals = totals_.at(static_cast<double>(k) * sample_dt);
+        const AffineTotals& totals = forces_.at(static_cast<double>(k) * sample_dt);
         return obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k),
-                                 AffineForces{fa_.data(), fb_.data(), &totals});
+                                 AffineForces{forces_.a(), forces_.b(), &totals});
       }();
       if (used > 0) {
         s_.work.stretch_samples += used;

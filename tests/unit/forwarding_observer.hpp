@@ -1,0 +1,26 @@
+#pragma once
+// An observer that hands every sample to a friction observer, for tests that watch or change one
+// kind of call: blocks of quiet-phase samples offered as sums (sample_sums) it declines, so they
+// come one by one; a test overrides whatever else it watches.
+#include "springblock/observe/friction_observer.hpp"
+
+namespace sbtest {
+
+class Forwarding : public sb::Observer {
+ public:
+  explicit Forwarding(sb::FrictionObserver& inner) : inner_(inner) {}
+  void sample(const sb::Chain& c, const sb::State& s) override { inner_.sample(c, s); }
+  long sample_affine(const sb::Chain& c, const sb::State& s, long k0, double dt, long n,
+                     const sb::AffineForces& f) override {
+    return inner_.sample_affine(c, s, k0, dt, n, f);
+  }
+  bool wants_stop() const override { return inner_.wants_stop(); }
+  bool reads_groove_interiors() const override { return inner_.reads_groove_interiors(); }
+  bool reads_only_friction() const override { return inner_.reads_only_friction(); }
+  bool needs_positions_at(double t) const override { return inner_.needs_positions_at(t); }
+
+ protected:
+  sb::FrictionObserver& inner_;
+};
+
+}  // namespace sbtest
