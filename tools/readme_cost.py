@@ -103,8 +103,8 @@ def run_lines(runs):
             if len(runs) > 1 else "")
     out.append(f"- issue 19's goal: targets at most {GOAL_PAPER_TARGETS_S:.0f} s ({verdict_p}: {median}"
                f"{t_all:.1f} s{each}); of them the paper's figures and tables, without the project's "
-               f"{' and '.join(PROJECT_STUDIES)} studies, {secs(t_paper)} (sensitivity runs three table rows, "
-               f"which tab_pat0 and tab_pat1 read from it: their time is in sensitivity's)")
+               f"{' and '.join(PROJECT_STUDIES)} studies, {secs(t_paper)} (sensitivity runs table rows that "
+               f"tab_pat0 and tab_pat1 read from it: their time is in sensitivity's)")
     return out
 
 

@@ -24,7 +24,8 @@
 // is the derivative-free form.
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "springblock/integrate/infinity.hpp"
 
 namespace sb::event_detail {
 
@@ -42,8 +43,7 @@ double first_root(G g, double lo, double g_lo, double hi, double g_hi, Width wid
   int moved = 0;              // the end that moved last: -1 lo, +1 hi
   double w1 = 2 * (hi - lo);  // the bracket's width one and two evaluations ago
   double w2 = w1;
-  constexpr double kNone = std::numeric_limits<double>::infinity();
-  double a1 = kNone, a2 = kNone;  // |g| at the last two points
+  double a1 = kInf, a2 = kInf;  // |g| at the last two points (none yet)
   int slow = 0;                   // points in a row after which the bracket had not halved
   for (int it = 0; it < 200; ++it) {
     const double w = hi - lo, margin = 0.5 * width(hi);
@@ -86,22 +86,21 @@ double first_root(G g, double lo, double g_lo, double hi, double g_hi, Width wid
 template <class GD, class Width>
 double first_root_newton(GD gd, double lo, double glo, double hi, double ghi, Width width, double x, double gx,
                          double dgx) {
-  constexpr double kNone = std::numeric_limits<double>::infinity();
   int kept = 0;  // +1: lo kept last time, -1: hi kept last time
   bool was_newton = false;
-  const bool have = x != kNone;  // x, gx, dgx: the last evaluation (from it > 0 on, or given)
-  double w_before = kNone;
+  const bool have = x != kInf;  // x, gx, dgx: the last evaluation (from it > 0 on, or given)
+  double w_before = kInf;
   int stalled = 0;  // Newton points in a row after which the bracket had not halved
   for (int it = 0; it < 200; ++it) {
     const double w = hi - lo, tol = width(hi);
     if (!(w > tol)) break;
-    double mid = kNone;
+    double mid = kInf;
     if ((it > 0 || have) && dgx != 0 && stalled < 2) {
       const double step = -gx / dgx;
       mid = x + step + std::copysign(0.25 * tol, step);
-      if (!(mid > lo && mid < hi)) mid = kNone;
+      if (!(mid > lo && mid < hi)) mid = kInf;
     }
-    was_newton = mid != kNone;
+    was_newton = mid != kInf;
     if (!was_newton) {
       mid = hi - ghi * (hi - lo) / (ghi - glo);
       if (!(mid > lo + 1e-3 * w && mid < hi - 1e-3 * w)) mid = 0.5 * (lo + hi);

@@ -28,13 +28,12 @@ double first_stop_tau(const DampedMode& mode, double x0, double p0, int dir, dou
   // Newton's method converges in a few points where a bisection took ~45 (each an exponential, a
   // sine and a cosine). It starts from hi, the end of an interval between zeros of x''.
   auto slope = [&](double x, double xd) { return d * (-gamma * xd - w2 * x); };
-  auto refine = [&](double lo, double g_lo, double hi, double x_hi, double xd_hi) {
+  auto refine = [&](double lo, double g_lo, double hi, double g_hi, double x_hi, double xd_hi) {
     auto gd = [&](double tau, double& gv, double& dg) {
       double x, xd;
       gv = g(tau, x, xd);
       dg = slope(x, xd);
     };
-    const double g_hi = d * (vs + xd_hi);
     return first_root_newton(gd, lo, g_lo, hi, g_hi, [&](double h) { return time_round_off(t_ref + h); }, hi, g_hi,
                              slope(x_hi, xd_hi));
   };
@@ -56,10 +55,10 @@ double first_stop_tau(const DampedMode& mode, double x0, double p0, int dir, dou
         step *= 2;
         hi = lo + step;
       }
-      return refine(lo, g_lo, hi, x, xd);
+      return refine(lo, g_lo, hi, g_hi, x, xd);
     }
     const double g_hi = g(hi, x, xd);
-    if (g_hi <= 0) return refine(lo, g_lo, hi, x, xd);
+    if (g_hi <= 0) return refine(lo, g_lo, hi, g_hi, x, xd);
     // Without damping x' is periodic (two intervals per period) and its energy constant: no
     // stop within the first period means none ever (a creeping block touching v = 0 at most).
     if (mode.alpha == 0.0 && interval >= 1) return kInf;

@@ -132,7 +132,7 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
     }
     const long m = lo + 1 - j;
     double part_abs, part_signed;
-    interior_.sums(p, m, m == n ? st : sum_of_taus(k0 + j, m), part_abs, part_signed);
+    interior_.sums(p, m, sum_of_taus(k0 + j, m), part_abs, part_signed);
     interior_abs += part_abs, interior_signed += part_signed;
     j += m;
   }

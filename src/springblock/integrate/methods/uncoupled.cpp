@@ -3,14 +3,12 @@
 #include <cmath>
 #include <queue>
 #include <stdexcept>
-#include <string>
 
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/mode_stop.hpp"
 #include "springblock/integrate/events/switching.hpp"
 #include "springblock/sample_schedule.hpp"
 #include "springblock/integrate/infinity.hpp"
-#include "springblock/integrate/round_off.hpp"
 #include "springblock/work_profile.hpp"
 
 namespace sb::event_detail {
