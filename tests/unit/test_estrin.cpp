@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "springblock/integrate/estrin.hpp"
+#include "springblock/integrate/numerics/estrin.hpp"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "springblock/integrate/events/bernstein.hpp"
-#include "springblock/integrate/events/first_root.hpp"
+#include "springblock/integrate/numerics/bernstein.hpp"
+#include "springblock/integrate/numerics/first_root.hpp"
 #include "springblock/integrate/methods/event_driven.hpp"
 #include "springblock/observe/friction_observer.hpp"
 #include "springblock/scene.hpp"

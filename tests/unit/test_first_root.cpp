@@ -10,7 +10,7 @@
 #include <functional>
 #include <random>
 
-#include "springblock/integrate/events/first_root.hpp"
+#include "springblock/integrate/numerics/first_root.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 #include "springblock/integrate/events/active_set.hpp"
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "springblock/integrate/events/active_set.hpp"
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 
 namespace sb::event_detail {
 

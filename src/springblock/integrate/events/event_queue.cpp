@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 
 namespace sb::event_detail {
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "springblock/integrate/events/first_root.hpp"
-#include "springblock/integrate/round_off.hpp"
+#include "springblock/integrate/numerics/first_root.hpp"
+#include "springblock/integrate/numerics/round_off.hpp"
 
 namespace sb::event_detail {
 namespace {

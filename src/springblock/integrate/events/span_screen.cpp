@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "springblock/integrate/estrin.hpp"
-#include "springblock/integrate/events/first_root.hpp"
-#include "springblock/integrate/infinity.hpp"
-#include "springblock/integrate/round_off.hpp"
+#include "springblock/integrate/numerics/estrin.hpp"
+#include "springblock/integrate/numerics/first_root.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/integrate/numerics/round_off.hpp"
 
 namespace sb::event_detail {
 namespace {

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "springblock/integrate/events/active_set.hpp"
-#include "springblock/integrate/events/bernstein.hpp"
+#include "springblock/integrate/numerics/bernstein.hpp"
 #include "springblock/integrate/linear/span_modes.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"

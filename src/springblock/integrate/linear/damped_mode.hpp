@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "springblock/integrate/estrin.hpp"
+#include "springblock/integrate/numerics/estrin.hpp"
 
 namespace sb::event_detail {
 
@@ -86,7 +86,7 @@ struct DampedMode {
   double omega2 = 0;  // omega^2 [1/s^2]
   // Derived once here rather than at every evaluation (the sqrt sat on each evaluation's
   // critical path): s = omega^2 - alpha^2 and, for an underdamped mode, its frequency sqrt(s).
-  // The same expressions as before, so evaluations give the same doubles. A mode is made by the
+  // A mode is made by the
   // constructor below and never changed after (nothing assigns alpha or omega2 later, which
   // would leave these stale).
   double s = 0;       // omega^2 - alpha^2 [1/s^2]: > 0 underdamped, < 0 overdamped

@@ -1,5 +1,5 @@
 #include "springblock/integrate/linear/edge_march.hpp"
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 #include "springblock/kernel_clones.hpp"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "springblock/integrate/linear/modal_runs.hpp"
 #include "springblock/integrate/linear/envelope.hpp"
-#include "springblock/integrate/infinity.hpp"
-#include "springblock/integrate/round_off.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/integrate/numerics/round_off.hpp"
 
 #include <algorithm>
 #include <cmath>

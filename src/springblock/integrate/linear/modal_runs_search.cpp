@@ -3,7 +3,7 @@
 // the exact stepper's screen.
 #include <cmath>
 
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 #include "springblock/integrate/linear/modal_runs.hpp"
 
 namespace sb::event_detail {

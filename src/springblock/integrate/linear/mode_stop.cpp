@@ -3,10 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "springblock/integrate/events/first_root.hpp"
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/first_root.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 #include "springblock/integrate/linear/mode_zero.hpp"
-#include "springblock/integrate/round_off.hpp"
+#include "springblock/integrate/numerics/round_off.hpp"
 
 namespace sb::event_detail {
 

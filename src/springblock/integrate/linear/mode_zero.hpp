@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 #include "springblock/integrate/linear/damped_mode.hpp"
 
 namespace sb::event_detail {

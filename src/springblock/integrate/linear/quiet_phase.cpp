@@ -1,6 +1,6 @@
 #include "springblock/integrate/linear/quiet_phase.hpp"
 #include "springblock/integrate/linear/envelope.hpp"
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -15,8 +15,8 @@
 // An edge force whose sign the bound cannot fix (its affine part within the modes' reach: just
 // after a slip, beside a groove still ringing) is summed sample by sample instead, from its
 // segments' end rows brought from sample to sample by the same recurrence as advance_sample;
-// the other forces stay in closed form. Before, one such edge sent the whole block of samples to
-// one-by-one service (every live mode advanced, every edge summed, per sample).
+// the other forces stay in closed form, so one such edge does not send the whole block of samples
+// to one-by-one service (every live mode advanced, every edge summed, per sample).
 #include <algorithm>
 #include <cmath>
 

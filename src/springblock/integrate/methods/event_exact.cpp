@@ -7,7 +7,7 @@
 // afresh before the next step.
 #include <algorithm>
 
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 
 #include "springblock/integrate/methods/event_run.hpp"
 

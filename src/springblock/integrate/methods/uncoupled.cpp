@@ -8,7 +8,7 @@
 #include "springblock/integrate/linear/mode_stop.hpp"
 #include "springblock/integrate/events/switching.hpp"
 #include "springblock/sample_schedule.hpp"
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 #include "springblock/work_profile.hpp"
 
 namespace sb::event_detail {

@@ -3,15 +3,15 @@
 // with g(lo) > 0 >= g(hi), narrowed until the bracket is no wider than width(hi).
 //
 // Regula falsi with the Anderson-Bjorck rule (the value of a bracket end that stays put twice in
-// a row is scaled down, kept_scale, so neither end can stall; it replaced Illinois' halving on
-// 2026-11-26: 5 % fewer evaluations per root of the exact stepper's screen, paper/choices.md),
-// each point kept half the final width inside the bracket
-// (an estimate good to that closes the bracket from the far side with the next point), and a
-// bisection whenever the bracket has not halved over the last two evaluations, unless |g| fell
-// eightfold over them (at most 8 points in a row). That exception is since 2026-11-26: regula
-// falsi closing in on a root from one side leaves the far end put, so the bracket does not halve
-// although every point gains digits, and the bisections it forced were wasted points (the
-// screen's polynomials: 8.8 to 10.0 evaluations per refined root -> 6.9 to 7.5). The result has
+// a row is scaled down, kept_scale, so neither end can stall; 5 % fewer evaluations per root of
+// the exact stepper's screen than Illinois' halving, paper/choices.md), each point kept half the
+// final width inside the bracket (an estimate good to that closes the bracket from the far side
+// with the next point), and a bisection whenever the bracket has not halved over the last two
+// evaluations, unless |g| fell eightfold over them (at most 8 points in a row): regula falsi
+// closing in on a root from one side leaves the far end put, so the bracket does not halve
+// although every point gains digits, and a forced bisection there is a wasted point (the
+// screen's polynomials: 6.9 to 7.5 evaluations per refined root, against 8.8 to 10.0 when
+// bisecting on every such pair, paper/choices.md). The result has
 // what a bisection's has: g(result) <= 0 (or NaN) within the final width of a point with g > 0.
 // On the continuous extension of a Dormand-Prince step, which is a quartic, it takes ~7
 // evaluations per event where a bisection to round-off in t took ~29 (measured on smooth and
@@ -25,7 +25,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "springblock/integrate/infinity.hpp"
+#include "springblock/integrate/numerics/infinity.hpp"
 
 namespace sb::event_detail {
 
@@ -75,11 +75,11 @@ double first_root(G g, double lo, double g_lo, double hi, double g_hi, Width wid
 // good the point lands on the far side and closes the bracket. A Newton point outside the
 // bracket, or two Newton steps in a row that did not halve it, hand one iteration to regula falsi
 // with the Illinois modification (bisection when the secant point is not well inside), which
-// keeps the bracket at every iteration. (Until 2026-11-26 one Newton step that did not halve it
-// was enough: a Newton point from the far side of a root falls short of it by its curvature,
-// onto the near side, and the next, which would have closed the bracket, was then regula
-// falsi's; EdgeMarch's roots took ~11 evaluations, now ~4.5.) The bracket stops when no wider
-// than width(hi); the result is the crossed end hi. (x, gx, dgx): an evaluation inside the bracket to start from (x = +inf: none;
+// keeps the bracket at every iteration. One such Newton step is not enough to give up on Newton:
+// a Newton point from the far side of a root falls short of it by its curvature, onto the near
+// side, and the next one closes the bracket (EdgeMarch's roots: ~4.5 evaluations, against ~11
+// when that next point went to regula falsi). The bracket stops when no wider than width(hi);
+// the result is the crossed end hi. (x, gx, dgx): an evaluation inside the bracket to start from (x = +inf: none;
 // the first point is then regula falsi's). EdgeMarch's searches use it; on the exact stepper's
 // event polynomials, where the slope costs a second polynomial, it measured 1.04 to 1.12 times
 // first_root's time per slip start (paper/choices.md), so the screen keeps first_root.
