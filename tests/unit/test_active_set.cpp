@@ -69,7 +69,9 @@ TEST(ActiveSet, StepsOnlyRunsThatMoveAndWatchesTheirStuckNeighbours) {
   // Groove 3-4 rings, groove 8-9 sits on its (approximate) quasi-static solution.
   settle_grooves(c, s);
   s.v[3] += 1e-3;
-  ActiveSet a(c, true, kAtolU, kAtolV);
+  sb::event_detail::RunShapes a_shapes(c);
+  sb::event_detail::RunStore a_store(c, a_shapes);
+  ActiveSet a(c, a_store, true, kAtolU, kAtolV);
   a.rebuild(c, s);
   std::vector<std::pair<int, int>> spans;
   for (const auto& sp : a.stepped()) spans.emplace_back(sp.lo, sp.hi);
@@ -81,7 +83,9 @@ TEST(ActiveSet, StepsOnlyRunsThatMoveAndWatchesTheirStuckNeighbours) {
   EXPECT_EQ(a.kind(8), ActiveSet::kSettled);
   EXPECT_EQ(a.kind(6), ActiveSet::kStuck);
   // Without settling (the reference mode) the quiet groove is stepped as well.
-  ActiveSet ref(c, false, kAtolU, kAtolV);
+  sb::event_detail::RunShapes ref_shapes(c);
+  sb::event_detail::RunStore ref_store(c, ref_shapes);
+  ActiveSet ref(c, ref_store, false, kAtolU, kAtolV);
   ref.rebuild(c, s);
   EXPECT_EQ(ref.stepped().size(), 3u);
   EXPECT_EQ(ref.kind(8), ActiveSet::kStepped);
@@ -92,7 +96,9 @@ TEST(ActiveSet, UncoupledBlocksAreEachTheirOwnRun) {
   c.K_int = 0;
   sb::State s = sb::State::at_rest(c);
   s.dir[1] = s.dir[2] = 1;
-  ActiveSet a(c, false, kAtolU, kAtolV);
+  sb::event_detail::RunShapes a_shapes(c);
+  sb::event_detail::RunStore a_store(c, a_shapes);
+  ActiveSet a(c, a_store, false, kAtolU, kAtolV);
   a.rebuild(c, s);
   // Blocks 1 and 2 slide side by side but do not interact: separate runs, no stuck block watched.
   ASSERT_GE(a.stepped().size(), 2u);
@@ -108,7 +114,9 @@ TEST(ActiveSet, SettledGrooveIsTheParticularSolutionOfItsEquations) {
     s.t = 0.02;
     for (int i = 0; i < c.N; ++i) s.u[i] = 1e-6 * std::sin(1.0 + i);
     settle_grooves(c, s);
-    ActiveSet a(c, true, kAtolU, kAtolV);
+    sb::event_detail::RunShapes a_shapes(c);
+    sb::event_detail::RunStore a_store(c, a_shapes);
+    ActiveSet a(c, a_store, true, kAtolU, kAtolV);
     a.rebuild(c, s);
     // The groove positions relaxed above are within round-off of the active set's A + B t, so
     // both grooves are settled and nothing is stepped.
@@ -133,7 +141,9 @@ TEST(ActiveSet, ClosedFormCrossingReachesTheThresholdExactly) {
   sb::State s = sb::State::at_rest(c);
   s.t = 0.01;
   settle_grooves(c, s);
-  ActiveSet a(c, true, kAtolU, kAtolV);
+  sb::event_detail::RunShapes a_shapes(c);
+  sb::event_detail::RunStore a_store(c, a_shapes);
+  ActiveSet a(c, a_store, true, kAtolU, kAtolV);
   a.rebuild(c, s);
   ASSERT_TRUE(a.watched().empty());  // nothing slides, nothing rings
   const auto next = a.next_crossing();
@@ -159,7 +169,9 @@ TEST(ActiveSet, RingingGrooveRetiresOnceItsTransientIsBelowTolerance) {
   s.t = 0.01;
   settle_grooves(c, s);
   s.v[4] += 10 * kAtolV;  // a transient ten times the tolerance
-  ActiveSet a(c, true, kAtolU, kAtolV);
+  sb::event_detail::RunShapes a_shapes(c);
+  sb::event_detail::RunStore a_store(c, a_shapes);
+  ActiveSet a(c, a_store, true, kAtolU, kAtolV);
   a.rebuild(c, s);
   EXPECT_EQ(a.kind(4), ActiveSet::kStepped);
   EXPECT_FALSE(a.retire_settled(c, s));  // still ringing: stays
@@ -182,7 +194,9 @@ TEST(ActiveSet, ShortRunsAreSteppedUntilTheyOutlastASlip) {
   settle_grooves(c, s);
   s.dir[1] = 1;  // block 1 slides between stuck pawls 0 and 2
   s.v[1] = 0.1 * c.v_slider;
-  ActiveSet a(c, true, kAtolU, kAtolV, 2, 64, 1.0);
+  sb::event_detail::RunShapes a_shapes(c);
+  sb::event_detail::RunStore a_store(c, a_shapes);
+  ActiveSet a(c, a_store, true, kAtolU, kAtolV, 2, 64, 1.0);
   a.rebuild(c, s);
   EXPECT_EQ(a.kind(1), ActiveSet::kStepped);
   EXPECT_EQ(a.watched(), (std::vector<int>{0, 1, 2}));

@@ -22,8 +22,8 @@ constexpr double kSettleFrac = 0.1;
 
 }  // namespace
 
-ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v, int modal_max_run,
-                     int modal_max_groove, double t_end)
+ActiveSet::ActiveSet(const Chain& c, RunStore& store, bool settle_grooves, double atol_u, double atol_v,
+                     int modal_max_run, int modal_max_groove, double t_end)
     : N_(c.N),
       K_int_(c.K_int),
       settle_grooves_(settle_grooves),
@@ -31,13 +31,13 @@ ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double 
       modal_max_groove_(settle_grooves && c.K_int > 0 ? modal_max_groove : 0),
       promote_age_(4.0 * M_PI / c.omega_max()),
       t_end_(t_end),
-      modal_(c),
+      modal_(c, store),
       dir_prev_(c.N, 0),
       kind_prev_(c.N, kStuck),
       eps_u_(kSettleFrac * atol_u),
       eps_v_(kSettleFrac * atol_v),
       kind_(c.N, kStuck),
-      paths_(c),
+      store_(store),
       events_(c.N),
       fresh_(c.N, 0) {
   modal_.set_settle_scales(eps_u_, eps_v_);
@@ -47,11 +47,22 @@ ActiveSet::ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double 
 }
 
 bool ActiveSet::settled_now(const State& s, BlockRange r) const {
-  return settle_grooves_ && paths_.within(s, r, eps_u_, eps_v_);
+  if (!settle_grooves_) return false;
+  const RunShape& sh = store_.shapes().of(r);
+  const double uL = sh.left ? s.u[r.lo - 1] : 0.0, uR = sh.right ? s.u[r.hi] : 0.0;
+  for (int k = 0; k < r.size(); ++k) {
+    const int i = r.lo + k;
+    const double A = sh.a0[k] + uL * sh.gL[k] + uR * sh.gR[k];
+    if (std::fabs(s.u[i] - (A + sh.B[k] * s.t)) > eps_u_) return false;
+    if (std::fabs(s.v[i] - sh.B[k]) > eps_v_) return false;
+  }
+  return true;
 }
 
 // From scratch: every run is new, every modal run projected, every event time computed.
 void ActiveSet::rebuild(const Chain& c, const State& s) {
+  for (const Run& r : runs_)
+    if (r.kind == kSettled) drop_old(r);
   runs_.clear();
   find_runs(c, s, 0, N_, runs_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
@@ -123,8 +134,7 @@ ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uin
     if (was == kModal && untouched(s, touched, r.span) && modal_.same_run(r.span.lo, r.span.hi))
       return s.t >= modal_.settled_after(r.span.lo) ? kSettled : kModal;
     // Was stepped, or modal and touched (ringing, or part of an active run), or never
-    // classified: new A, B.
-    paths_.compute(s, r.span);
+    // classified: judged against its path.
     if (settled_now(s, r.span)) return kSettled;
   }
   // A run holding a contact block starts stepped; promote_runs() makes it modal if it lasts.
@@ -137,9 +147,19 @@ ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uin
 void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
   r.kind = kind;
   std::fill(kind_.begin() + r.span.lo, kind_.begin() + r.span.hi, kind);
+  if (kind == kSettled) {
+    if (store_.owner(r.span.lo) != RunStore::kSettled || store_.exact(r.span) == nullptr)
+      store_.project(c, r.span, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kSettled, false);
+    return;
+  }
   if (kind != kModal) return;
   modal_.add(c, s, r.span.lo, r.span.hi, r.grooves);
   set_fresh(r.span);
+}
+
+void ActiveSet::drop_old(const Run& r) {
+  if (r.kind == kModal) modal_.drop(r.span.lo);
+  else if (r.kind == kSettled && store_.owner(r.span.lo) == RunStore::kSettled) store_.drop(r.span.lo);
 }
 
 void ActiveSet::set_fresh(BlockRange r) {
@@ -173,10 +193,8 @@ void ActiveSet::list_stepped(const State& s) {
 }
 
 void ActiveSet::materialise(double t, double* u, double* v, bool at_sample, bool ends_only) {
-  for (const Run& r : runs_) {
-    if (r.kind != kSettled) continue;
-    paths_.write(r.span, t, u, v);
-  }
+  for (const Run& r : runs_)
+    if (r.kind == kSettled) store_.write_path(store_.run(r.span.lo), t, u, v);
   if (any_modal()) modal_.materialise(t, u, v, at_sample, ends_only);
 }
 
@@ -187,11 +205,8 @@ void ActiveSet::materialise_near(double t, double* u, double* v, const std::vect
       if (j < 0 || j >= N_) continue;
       if (kind_[j] == kSettled) {
         // The whole run: it may merge into a new run that is stepped or projected from s.u.
-        if (u[j] == paths_.u(j, t) && v[j] == paths_.drift(j)) continue;  // written already
-        int lo = j, hi = j + 1;
-        while (lo > 0 && kind_[lo - 1] == kSettled) --lo;
-        while (hi < N_ && kind_[hi] == kSettled) ++hi;
-        paths_.write({lo, hi}, t, u, v);
+        if (u[j] == store_.path_u(j, t) && v[j] == store_.B(j)) continue;  // written already
+        store_.write_path(store_.run(j), t, u, v);
       } else if (kind_[j] == kModal) {
         const int lo = modal_.run_start(j);
         if (std::find(done_.begin(), done_.end(), lo) != done_.end()) continue;  // a few runs at most

@@ -9,7 +9,8 @@
 //   * Ringing  if it is grooves only and still carries a transient: stepped too (its own blocks
 //              only, so a groove far from the slip costs n, not N);
 //   * Settled  if it is grooves only and its transient is below the tolerance (see below):
-//              u = A + B t exactly, the affine particular solution (a tridiagonal solve);
+//              u = A + B t exactly, the affine particular solution (a run store record
+//              without modes, run_store.hpp);
 //   * Modal    if it is not settled and at most modal_max_run blocks long (modal_max_groove
 //              for a grooves-only run, which has no stop to search): propagated exactly
 //              by its modes with no time step (modal_runs.hpp), its stops and its stuck
@@ -39,8 +40,8 @@
 
 #include "springblock/integrate/block_range.hpp"
 #include "springblock/integrate/events/event_queue.hpp"
-#include "springblock/integrate/linear/affine_paths.hpp"
 #include "springblock/integrate/linear/modal_runs.hpp"
+#include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 
@@ -48,9 +49,9 @@ namespace sb::event_detail {
 
 class ActiveSet {
  public:
-  ActiveSet(const Chain& c, bool settle_grooves, double atol_u, double atol_v, int modal_max_run = 0,
+  // The settled and modal runs' records live in store.
+  ActiveSet(const Chain& c, RunStore& store, bool settle_grooves, double atol_u, double atol_v, int modal_max_run = 0,
             int modal_max_groove = 0, double t_end = std::numeric_limits<double>::infinity());
-  void set_sample_dt(double dt) { modal_.set_sample_dt(dt); }
 
   // Classify every run at s.t from scratch (the start of a run).
   void rebuild(const Chain& c, const State& s);
@@ -70,13 +71,13 @@ class ActiveSet {
   enum Kind : std::uint8_t { kStuck = 0, kStepped = 1, kSettled = 2, kModal = 3 };
   Kind kind(int i) const { return static_cast<Kind>(kind_[i]); }
   // Displacement of a settled groove block at time t.
-  double settled_u(int i, double t) const { return paths_.u(i, t); }
+  double settled_u(int i, double t) const { return store_.path_u(i, t); }
   // Displacement of a block in a modal run at time t.
   double modal_u(int i, double t) const { return modal_.u(i, t); }
   // Its Taylor polynomial about t (ModalRuns::row_taylor).
   void modal_taylor(int i, double t, int deg, double* c) { modal_.row_taylor(i, t, deg, c); }
   // Velocity of a settled groove block (its path's slope).
-  double settled_drift(int i) const { return paths_.drift(i); }
+  double settled_drift(int i) const { return store_.B(i); }
   // Its affine path and a bound on its deviation from it (ModalRuns::amplitude).
   double modal_affine_u(int i, double t) const { return modal_.affine_u(i, t); }
   double modal_amplitude(int i) const { return modal_.amplitude(i); }
@@ -128,15 +129,17 @@ class ActiveSet {
     bool grooves;    // grooves only (never holds a contact block)
     double formed;   // when it was found: nothing in or beside it has switched since
   };
+  // Whether groove run r is within the settle scales of its affine path at s.t (the path formed
+  // from the shape's pieces and the stuck ends' positions, as a settled record would hold it).
   bool settled_now(const State& s, BlockRange r) const;
   // The maximal runs of mobile blocks in [lo, hi) (whose borders are stuck or the chain's ends),
   // appended to out in block order.
   void find_runs(const Chain& c, const State& s, int lo, int hi, std::vector<Run>& out) const;
-  // The kind of run r at s.t, given the previous classification in kind_ and modal_ (the
-  // grooves' A, B recomputed in paths_ where they may have changed).
+  // The kind of run r at s.t, given the previous classification in kind_ and modal_.
   Kind classify(const Run& r, const State& s, const std::uint8_t* touched);
   // Set run r's kind in kind_ (its blocks); a run that becomes modal is registered, projected
-  // afresh (fresh_). The caller drops a modal run that stops being one.
+  // afresh (fresh_), and a settled one gets its record on its path. The caller drops a modal run
+  // that stops being one (drop_old).
   void assign(const Chain& c, const State& s, Run& r, Kind kind);
   // Mark run r projected afresh at this classification; forget the marks of the previous one.
   void set_fresh(BlockRange r);
@@ -160,6 +163,8 @@ class ActiveSet {
   // After run r changed kind with time (settled, or promoted to modal): its stuck contact
   // borders without an event time get one, closed form or queued for a modal search (pending_).
   void renew_borders(const Chain& c, const State& s, BlockRange r);
+  // Run r leaves the classification: its modal run or settled record is let go.
+  void drop_old(const Run& r);
   // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
   void update_crossing(const Chain& c, const State& s, int i);
   // The event time of stuck block i when it needs no modal search (watched: none here;
@@ -191,7 +196,7 @@ class ActiveSet {
   std::vector<Run> runs_;
   std::vector<BlockRange> stepped_;
   std::vector<int> watched_;
-  AffinePaths paths_;                  // settled and just-classified groove runs' A + B t
+  RunStore& store_;                    // the settled and modal runs' records
   EventQueue events_;                  // per contact block: next closed-form or modal event (inf if none / watched)
   std::vector<std::uint8_t> fresh_;    // per block: in a modal run projected afresh at this classification
   std::vector<BlockRange> fresh_runs_;  // those runs (to clear fresh_ at the next one)

@@ -69,7 +69,7 @@ void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit
     for (int side = 0; side < 2; ++side) {
       const int j = side == 0 ? i - 1 : i + 1;
       if (j < 0 || j >= N_) continue;
-      if (kind_[j] == kSettled) base[side] = settled_u(j, s.t), nb_B[side] = paths_.drift(j);
+      if (kind_[j] == kSettled) base[side] = settled_u(j, s.t), nb_B[side] = store_.B(j);
       else base[side] = s.u[j];
     }
     f = modal_.crossing_time(c, s, i, base, nb_B, limit);
@@ -109,7 +109,7 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
       }
       if (kind_[j] == kSettled) {
         a += K_int_ * (settled_u(j, s.t) - s.u[i]);
-        b += K_int_ * paths_.drift(j);
+        b += K_int_ * store_.B(j);
       } else {
         a += K_int_ * (s.u[j] - s.u[i]);
       }
@@ -131,8 +131,8 @@ bool ActiveSet::retire_settled(const Chain& c, const State& s) {
   for (int k : ringing_) {
     Run& r = runs_[k];
     if (!settled_now(s, r.span)) continue;
-    r.kind = kSettled;
-    for (int i = r.span.lo; i < r.span.hi; ++i) kind_[i] = kind_prev_[i] = kSettled;
+    assign(c, s, r, kSettled);
+    for (int i = r.span.lo; i < r.span.hi; ++i) kind_prev_[i] = kSettled;
     changed = true;
   }
   if (!changed) return false;

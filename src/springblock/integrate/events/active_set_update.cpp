@@ -60,8 +60,7 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
   find_runs(c, s, region.lo, region.hi, found_);
   // classify() reads the previous kinds, so every new kind is decided before any is written.
   for (Run& r : found_) r.kind = classify(r, s, touched);
-  for (auto it = first; it != last; ++it)
-    if (it->kind == kModal) modal_.drop(it->span.lo);
+  for (auto it = first; it != last; ++it) drop_old(*it);
   std::fill(kind_.begin() + region.lo, kind_.begin() + region.hi, kStuck);
   for (Run& r : found_) assign(c, s, r, r.kind);
   const auto at = runs_.erase(first, last);
@@ -78,7 +77,7 @@ void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_
     if (!r.grooves || (r.kind != kModal && r.kind != kStepped)) continue;
     const Kind kind = classify(r, s, touched);
     if (kind == r.kind) continue;
-    if (r.kind == kModal) modal_.drop(r.span.lo);
+    drop_old(r);
     assign(c, s, r, kind);
     retimed_.push_back(r.span);
   }

@@ -14,7 +14,7 @@
 #include <cmath>
 #include <limits>
 
-#include "springblock/integrate/linear/run_basis.hpp"
+#include "springblock/integrate/linear/run_shape.hpp"
 
 namespace sb::event_detail {
 
@@ -31,9 +31,9 @@ struct TransientEnvelope {
 };
 
 // q0, p0: the run's modal coordinates (one per mode of b).
-inline TransientEnvelope transient_envelope(const RunBasis& b, const double* q0, const double* p0) {
+inline TransientEnvelope transient_envelope(const RunShape& b, const double* q0, const double* p0) {
   TransientEnvelope e;
-  for (int k = 0; k < b.n(); ++k) {
+  for (int k = 0; k < b.n; ++k) {
     const DampedMode& m = b.modes[k];
     if (!(m.alpha > 0) || !(m.s > 0)) return TransientEnvelope{};
     const double w = m.w, P = p0[k] + m.alpha * q0[k];
@@ -45,20 +45,33 @@ inline TransientEnvelope transient_envelope(const RunBasis& b, const double* q0,
     e.v += C * m.omega;
     e.alpha = m.alpha;
   }
-  e.decays = b.n() > 0;
+  e.decays = b.n > 0;
   return e;
 }
 
 // Each mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it, whatever its
 // strength), so |q_k| <= sqrt(p0^2 + omega^2 q0^2) / omega at every time after the start, and row
 // r of the run deviates from its affine path by at most sum_k |Q_rk| times that.
-inline double row_deviation_bound(const RunBasis& b, int row, const double* q0, const double* p0) {
+inline double row_deviation_bound(const RunShape& b, int row, const double* q0, const double* p0) {
   double a = 0;
-  for (int k = 0; k < b.n(); ++k) {
-    const double w2 = b.modes[k].omega2;
-    a += std::fabs(b.Q(row, k)) * std::sqrt((p0[k] * p0[k] + w2 * q0[k] * q0[k]) / w2);
+  const double* Q = b.row(row);
+  for (int k = 0; k < b.n; ++k) {
+    const double w2 = b.w2[k];
+    a += std::fabs(Q[k]) * std::sqrt((p0[k] * p0[k] + w2 * q0[k] * q0[k]) / w2);
   }
   return a;
+}
+
+// The same energies bound the row's derivatives: |q^(j)| <= c_j sqrt(E) (RunShape::c), so
+// |u^(j)| <= sum_k |Q_rk| c_jk sqrt(E_k), j = 2 .. 5 into b[0 .. 3]. sE: sqrt(E_k) per mode.
+inline void row_derivative_bounds(const RunShape& b, int row, const double* sE, double out[4]) {
+  double d[4] = {0, 0, 0, 0};
+  const double* Q = b.row(row);
+  for (int k = 0; k < b.n; ++k) {
+    const double w = std::fabs(Q[k]) * sE[k];
+    for (int j = 0; j < 4; ++j) d[j] += w * b.c[j][k];
+  }
+  for (int j = 0; j < 4; ++j) out[j] = d[j];
 }
 
 }  // namespace sb::event_detail

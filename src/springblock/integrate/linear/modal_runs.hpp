@@ -17,21 +17,15 @@
 // a run length set by the caller, where it is cheaper (measured in bench_methods), and for a
 // run holding a contact block only once it has outlasted a short slip (ActiveSet::promote_runs).
 //
-// A run none of whose blocks nor stuck neighbours switched keeps its modal coordinates and its
-// event times across switches elsewhere: a switch costs only the runs it touches.
-#include <array>
-#include <cstdint>
+// A run none of whose blocks nor stuck neighbours switched keeps its record in the run store and
+// its event times across switches elsewhere: a switch costs only the runs it touches. The record
+// (path, modes, origin) is the store's (run_store.hpp); a modal run adds a sample cursor, scratch
+// coordinates at the time of the last search, and the searches themselves.
 #include <limits>
-#include <map>
-#include <tuple>
 #include <vector>
 
-#include <Eigen/Dense>
-
-#include "springblock/integrate/linear/affine_paths.hpp"
-#include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
-#include "springblock/integrate/linear/run_basis.hpp"
+#include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 
@@ -39,15 +33,13 @@ namespace sb::event_detail {
 
 class ModalRuns {
  public:
-  explicit ModalRuns(const Chain& c);
-  // Samples spaced by dt are advanced by each mode's exact transition matrix over dt.
-  void set_sample_dt(double dt);
+  ModalRuns(const Chain& c, RunStore& store);
 
   // Register run [lo, hi) as modal, projected afresh at s.t (grooves: it holds no contact
   // block). A run that stays modal with nothing in or beside it switched is simply kept (the
-  // active set decides): it keeps its coordinates and origin.
+  // active set decides): it keeps its record.
   void add(const Chain& c, const State& s, int lo, int hi, bool grooves);
-  // The run starting at block lo is no longer modal.
+  // The run starting at block lo is no longer modal (its record leaves the store).
   void drop(int lo);
   // No run is modal.
   void clear();
@@ -66,17 +58,16 @@ class ModalRuns {
   bool holds(int i) const { return run_of_[i] >= 0; }
   // First block of the run holding block i.
   int run_start(int i) const { return runs_[run_of_[i]].lo; }
-  // Exact u (and v) of a block in a modal run at time t (direct evaluation).
-  double u(int i, double t) const;
-  // The same as its affine path A + B t and a bound on the modes' part, |u - (A + B t)| <=
-  // amplitude(i) at every t after the projection (finite for a run's end rows only): enough to
-  // decide that a stuck neighbour is far from its threshold without evaluating the modes.
-  double affine_u(int i, double t) const { return A_[i] + B_[i] * t; }
-  double affine_slope(int i) const { return B_[i]; }
-  double amplitude(int i) const { return amp_[i]; }
-  // u of block i about time t as a polynomial in tau, c[j] = u^(j)(t) / j!, j = 0 .. deg (each
-  // mode's derivatives from its equation): the exact stepper's screen of a stuck block beside
-  // this run (span_screen.hpp).
+  // Exact u of a block in a modal run at time t (direct evaluation).
+  double u(int i, double t) const { return store_.u(i, t); }
+  // Its affine path A + B t and a bound on the modes' part, |u - (A + B t)| <= amplitude(i) at
+  // every time after the projection (finite for a run's end rows): enough to decide that a stuck
+  // neighbour is far from its threshold without evaluating the modes.
+  double affine_u(int i, double t) const { return store_.path_u(i, t); }
+  double affine_slope(int i) const { return store_.B(i); }
+  double amplitude(int i) const { return store_.bound(i, 0); }
+  // u of block i about time t as a polynomial in tau (RunStore::taylor): the exact stepper's
+  // screen of a stuck block beside this run (span_screen.hpp).
   void row_taylor(int i, double t, int deg, double* c);
   // Write every modal run's exact u, v at t. at_sample: t is a sample time, so the modal
   // coordinates may be advanced by the sample recurrence and kept as its new start. ends_only:
@@ -102,19 +93,10 @@ class ModalRuns {
                       double t_limit);
 
   int count() const { return static_cast<int>(runs_.size()); }
-  // Diagnostics: fresh projections made so far.
-  long projections = 0;
 
  private:
-  struct Basis {
-    const RunBasis* run;             // the run shape's modes (shared cache)
-    std::vector<Transition> grid;    // per mode: transition over the march grid
-    const AffineShapes::Shape* path;  // the affine path's pieces (see add())
-  };
   struct Run {
     int lo, hi;
-    const Basis* basis;
-    double t0;        // time origin of q0, p0
     double tc;        // time of the sample cursor qc, qdc
     int since = 0;    // recurrence steps since the cursor was last set from the closed form
     bool cursor = false;
@@ -122,32 +104,21 @@ class ModalRuns {
     double settled_after = std::numeric_limits<double>::infinity();
     double scratch_t = std::numeric_limits<double>::quiet_NaN();  // time of cq_, cp_ (scratch_at)
   };
-  // Rows of run r from modal coordinates q, qd at time t into u, v (rows [r0, r1) stepping by dr).
-  void rows(const Run& r, double t, const double* q, const double* qd, int r0, int r1, int dr, double* u,
-            double* v) const;
-  const Basis& basis(int n, bool left, bool right);
-  void set_end_amplitudes(const RunBasis& b, int lo, int hi);
-  // Modal coordinates of run r at time t into q, qd (per mode, indices lo.. of the flat arrays).
-  void coords(const Run& r, double t, double* q, double* qd) const;
-  // The same into the scratch slots cq_, cp_ [r.lo, r.hi), computed once per t: a switch
-  // searches a run's stops and both its stuck neighbours' crossings from the same s.t.
+  // The run's modal coordinates at t into the scratch slots cq_, cp_ [r.lo, r.hi), computed once
+  // per t: a switch searches a run's stops and both its stuck neighbours' crossings from the
+  // same s.t.
   void scratch_at(Run& r, double t);
+  const RunStore::Run& record(const Run& r) const { return store_.run(r.lo); }
 
   int N_;
-  double K_int_, eps_v_, H_, sample_dt_ = 0;
+  double K_int_, eps_v_, H_;
   double eps_u_ = 0, eps_v_settle_ = 0;  // settle scales (set_settle_scales)
-  RunBases modes_;
-  AffineShapes shapes_;
-  std::map<std::tuple<int, bool, bool>, Basis> bases_;
+  RunStore& store_;
   std::vector<Run> runs_;
-  std::vector<int> run_of_;                  // block -> index in runs_ (-1: not in a modal run)
-  std::vector<double> A_, B_;                // per block: particular solution
-  std::vector<double> amp_;                  // per block: bound on the modes' part (end rows)
-  std::vector<double> q0_, p0_, acc0_;       // per mode slot: q, q', q'' at the run's t0
-  std::vector<double> qc_, qdc_;             // per mode slot: sample cursor
-  std::vector<double> cq_, cp_;              // per mode slot: scratch coordinates at s.t
-  std::vector<double> vq_, va_;              // per mode slot: velocity modes' initial values at s.t
-  std::vector<double> rhs_;
+  std::vector<int> run_of_;       // block -> index in runs_ (-1: not in a modal run)
+  std::vector<double> qc_, qdc_;  // per mode slot: sample cursor
+  std::vector<double> cq_, cp_;   // per mode slot: scratch coordinates
+  std::vector<double> vq_, va_;   // per mode slot: velocity modes' initial values at s.t
   EdgeMarch march_;
 };
 

@@ -1,6 +1,5 @@
 // ModalRuns' event searches (modal_runs.hpp): a sliding block's stop and a stuck neighbour's
-// threshold crossing on the sum of a run's modes (EdgeMarch), and a row's Taylor polynomial for
-// the exact stepper's screen.
+// threshold crossing on the sum of a run's modes (EdgeMarch).
 #include <cmath>
 
 #include "springblock/integrate/numerics/infinity.hpp"
@@ -8,48 +7,35 @@
 
 namespace sb::event_detail {
 
-void ModalRuns::row_taylor(int i, double t, int deg, double* c) {
-  Run& r = runs_[run_of_[i]];
-  const int n = r.hi - r.lo, row = i - r.lo;
-  scratch_at(r, t);
-  const auto& modes = r.basis->run->modes;
-  const double gamma = 2.0 * (n > 0 ? modes[0].alpha : 0.0);
-  c[0] = A_[i] + B_[i] * t;
-  c[1] = B_[i];
-  for (int j = 2; j <= deg; ++j) c[j] = 0.0;
-  for (int k = 0; k < n; ++k)
-    add_taylor(r.basis->run->Q(row, k), cq_[r.lo + k], cp_[r.lo + k], gamma, modes[k].omega2, deg, c);
-  taylor_scale(deg, c);
-}
-
 ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, bool fresh, double t_limit) {
   Run& r = runs_[run_of_[i]];
-  const int n = r.hi - r.lo, row = i - r.lo;
+  const RunShape& sh = *record(r).shape;
+  const int n = r.hi - r.lo;
+  const double* row = sh.row(i - r.lo);
   const double dir = s.dir[i];
   // The velocity v = B + sum Q q_k' and each q_k' is a damped mode started from (q', q'') at
   // s.t. Event: -dir (v - B) >= dir B + eps_v, i.e. dir v <= -eps_v.
   scratch_at(r, s.t);
-  double v = B_[i];
   march_.reset();
   for (int k = 0; k < n; ++k) {
     const int slot = r.lo + k;
-    const DampedMode& m = r.basis->run->modes[k];
+    const DampedMode& m = sh.modes[k];
     vq_[slot] = cp_[slot];
     va_[slot] = -c.gamma * cp_[slot] - m.omega2 * cq_[slot];
-    v += r.basis->run->Q(row, k) * cp_[slot];
-    march_.add_mode(-dir * r.basis->run->Q(row, k), m, slot, r.basis->grid[k].data());
+    march_.add_mode(-dir * row[k], m, slot, sh.march[k].data());
   }
+  const double v = store_.row_v(i, cp_.data());
   march_.finish(H_);
   march_.set_affine(0.0, 0.0);
   // A block that has just started to slide sits at v = 0 exactly (see EdgeMarch's open origin).
   march_.set_sense(EdgeMarch::Sense::Upper, fresh ? dir * s.v[i] <= 0.0 : dir * v <= 0.0);
-  const double tau = march_.first_crossing(vq_.data(), va_.data(), dir * B_[i] + eps_v_, t_limit - s.t, s.t);
+  const double tau = march_.first_crossing(vq_.data(), va_.data(), dir * store_.B(i) + eps_v_, t_limit - s.t, s.t);
   return {s.t + tau, march_.hit_limit, t_limit};
 }
 
 ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j, const double base[2],
                                           const double nb_B[2], double t_limit) {
-  // The envelope first. Each modal side's end row stays within amp_ of its path at every time
+  // The envelope first. Each modal side's end row stays within its bound (amplitude()) of its path at every time
   // after its projection, so no crossing can come before the affine part of F is within their
   // sum of the threshold. Most searches after a switch end at t_limit (the next event, soon
   // while something slides) without a crossing; when the envelope already says so, the search
@@ -64,7 +50,7 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
         a += K_int_ * (base[side] - s.u[j]), b += K_int_ * nb_B[side];
         continue;
       }
-      a += K_int_ * (A_[nb] + B_[nb] * s.t - s.u[j]), b += K_int_ * B_[nb], spread += K_int_ * amp_[nb];
+      a += K_int_ * (store_.path_u(nb, s.t) - s.u[j]), b += K_int_ * store_.B(nb), spread += K_int_ * amplitude(nb);
     }
     const double room = c.f_static[j] - spread;
     if (std::fabs(a) < room) {
@@ -83,12 +69,13 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
       continue;
     }
     Run& r = runs_[run_of_[nb]];
-    const int n = r.hi - r.lo, row = nb - r.lo;
+    const RunShape& sh = *record(r).shape;
+    const double* row = sh.row(nb - r.lo);
     // The run's coordinates at s.t (its own origin may be older: it was kept across switches).
     scratch_at(r, s.t);
-    a += K_int_ * (A_[nb] + B_[nb] * s.t - s.u[j]);
-    b += K_int_ * B_[nb];
-    for (int k = 0; k < n; ++k) march_.add_mode(K_int_ * r.basis->run->Q(row, k), r.basis->run->modes[k], r.lo + k, r.basis->grid[k].data());
+    a += K_int_ * (store_.path_u(nb, s.t) - s.u[j]);
+    b += K_int_ * store_.B(nb);
+    for (int k = 0; k < r.hi - r.lo; ++k) march_.add_mode(K_int_ * row[k], sh.modes[k], r.lo + k, sh.march[k].data());
   }
   march_.finish(H_);
   march_.set_affine(a, b);

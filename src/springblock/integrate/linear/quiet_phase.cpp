@@ -17,9 +17,9 @@ double affine_crossing(double a, double b, double f) {
 
 }  // namespace
 
-QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), slider_slope_(c.K_s * c.v_slider), bases_(c), shapes_(c) {
+QuietPhase::QuietPhase(const Chain& c, RunStore& store)
+    : K_int_(c.K_int), slider_slope_(c.K_s * c.v_slider), store_(store), still_(c.N, 0) {
   const int N = c.N;
-  int offset = 0;
   for (int i = 0; i < N;) {
     if (c.contact[i]) {
       ++i;
@@ -28,15 +28,9 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), slider_slope_(c.K_s * 
     int j = i;
     while (j + 1 < N && !c.contact[j + 1]) ++j;
     const int n = j - i + 1;
-    const bool left = i > 0, right = j + 1 < N;
-    segs_.push_back(GrooveRun{i, n, &bases_.get(n, left, right), offset, left, right});
-    offset += n;
+    segs_.push_back(GrooveRun{i, n, &store.shapes().of({i, j + 1}), i > 0, j + 1 < N});
     i = j + 1;
   }
-  A_.resize(offset);
-  B_.resize(offset);
-  q0_.resize(offset);
-  p0_.resize(offset);
 
   // Groove index -> segment, to find the segments each contact block borders.
   std::vector<int> seg_of(N, -1);
@@ -59,8 +53,8 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), slider_slope_(c.K_s * 
     if (e.nseg) {
       for (int n = 0; n < e.nseg; ++n) {
         const GrooveRun& s = segs_[e.seg[n]];
-        const RunBasis& d = *s.basis;
-        for (int k = 0; k < s.n; ++k) e.march.add_mode(K_int_ * d.Q(e.row[n], k), d.modes[k], s.offset + k);
+        const double* row = s.shape->row(e.row[n]);
+        for (int k = 0; k < s.n; ++k) e.march.add_mode(K_int_ * row[k], s.shape->modes[k], s.first + k);
       }
       e.march.finish();
       edges_.push_back(std::move(e));
@@ -69,70 +63,46 @@ QuietPhase::QuietPhase(const Chain& c) : K_int_(c.K_int), slider_slope_(c.K_s * 
     }
   }
   affine_a_.resize(affine_blocks_.size());
-  qs_.resize(offset);
-  qds_.resize(offset);
+  qs_.resize(N);
+  qds_.resize(N);
   end_dots_.resize(2 * segs_.size());
   end_bound_.resize(2 * segs_.size());
   slot_.resize(segs_.size());
-  for (auto* w : {&wq_, &wp_, &wq1_, &wp1_}) w->resize(offset);
+  for (auto* w : {&wq_, &wp_, &wq1_, &wp1_}) w->resize(N);
   order_.resize(edges_.size());
 }
 
-// A, B of segment s from the stuck neighbours' positions in u, and the modal coordinates of the
-// deviation from them at t0.
-void QuietPhase::project(const GrooveRun& s, const double* u, const double* v, bool on_path) {
-  const double t0 = t0_;
-  const RunBasis& d = *s.basis;
-  double* A = A_.data() + s.offset;
-  double* B = B_.data() + s.offset;
-  double* q0 = q0_.data() + s.offset;
-  double* p0 = p0_.data() + s.offset;
-  // The affine path from the stuck neighbours' positions (affine_paths.hpp).
-  const AffineShapes::Shape& path = shapes_.get(s.n, s.left_stuck, s.right_stuck);
-  const double uL = s.left_stuck ? u[s.first - 1] : 0.0, uR = s.right_stuck ? u[s.first + s.n] : 0.0;
-  for (int r = 0; r < s.n; ++r) {
-    B[r] = path.B[r];
-    A[r] = path.a0[r] + uL * path.gL[r] + uR * path.gR[r];
-  }
-  if (on_path) {
-    std::fill(q0, q0 + s.n, 0.0);
-    std::fill(p0, p0 + s.n, 0.0);
+// Segment s's record at t0: kept where the active set holds it (a settled run is on its path, a
+// modal groove run's modes are moved to t0), projected from u and v otherwise.
+void QuietPhase::take_record(const Chain& c, const GrooveRun& s, const double* u, const double* v) {
+  const BlockRange r{s.first, s.first + s.n};
+  const RunStore::Run* held = store_.exact(r);
+  if (held != nullptr && (held->owner == RunStore::kSettled || held->owner == RunStore::kModal)) {
+    store_.rebase(s.first, t0_);
     return;
   }
-  for (int k = 0; k < s.n; ++k) {
-    double qk = 0, pk = 0;
-    for (int r = 0; r < s.n; ++r) {
-      const int i = s.first + r;
-      qk += d.Q(r, k) * (u[i] - A[r] - B[r] * t0);
-      pk += d.Q(r, k) * (v[i] - B[r]);
-    }
-    q0[k] = qk;
-    p0[k] = pk;
-  }
+  store_.project(c, r, t0_, u, v, still_.data(), RunStore::kQuiet);
 }
 
 // Underdamped modes shrink at least like e^{-alpha tau} (amplitude and velocity amplitude); once
 // below 1e-17 of the segment's u and v scales they no longer change a double (dead_tau), and
 // below the sample scales they are dropped from samples (sample_dead_tau).
 void QuietPhase::set_dead_times(GrooveRun& s) const {
-  const double* A = A_.data() + s.offset;
-  const double* B = B_.data() + s.offset;
   double uscale = 0, vscale = 0;
-  for (int r = 0; r < s.n; ++r) {
-    uscale = std::max(uscale, std::fabs(A[r] + B[r] * t0_));
-    vscale = std::max(vscale, std::fabs(B[r]));
+  for (int i = s.first; i < s.first + s.n; ++i) {
+    uscale = std::max(uscale, std::fabs(store_.path_u(i, t0_)));
+    vscale = std::max(vscale, std::fabs(store_.B(i)));
   }
-  const TransientEnvelope env = transient_envelope(*s.basis, q0_.data() + s.offset, p0_.data() + s.offset);
+  const TransientEnvelope env = store_.envelope(store_.run(s.first));
   s.dead_tau = env.time_below(1e-17 * uscale, 1e-17 * vscale);
   s.sample_dead_tau = std::min(s.dead_tau, env.time_below(sample_eps_u_, sample_eps_v_));
 }
 
-void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v,
-                       const std::function<bool(int)>& on_path) {
+void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
   t0_ = t0;
   sample_valid_ = false;
   for (GrooveRun& s : segs_) {
-    project(s, u, v, on_path && on_path(s.first));
+    take_record(c, s, u, v);
     set_dead_times(s);
   }
   for (std::size_t k = 0; k < affine_blocks_.size(); ++k)
@@ -141,14 +111,19 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
     double a = c.driving_force(e.block, u, v, t0), b = c.K_s * c.v_slider;
     for (int n = 0; n < e.nseg; ++n) {
       const GrooveRun& s = segs_[e.seg[n]];
-      const RunBasis& d = *s.basis;
-      b += c.K_int * B_[s.offset + e.row[n]];
-      for (int k = 0; k < s.n; ++k) a -= c.K_int * d.Q(e.row[n], k) * q0_[s.offset + k];
+      const double* row = s.shape->row(e.row[n]);
+      b += c.K_int * store_.B(s.first + e.row[n]);
+      for (int k = 0; k < s.n; ++k) a -= c.K_int * row[k] * store_.q0()[s.first + k];
     }
     e.march.set_affine(a, b);
     e.fa = a, e.fb = b;
   }
   interior_ready_ = false;
+}
+
+void QuietPhase::release() {
+  for (const GrooveRun& s : segs_)
+    if (store_.owner(s.first) == RunStore::kQuiet) store_.drop(s.first);
 }
 
 double QuietPhase::all_dead_after() const {
@@ -159,9 +134,6 @@ double QuietPhase::all_dead_after() const {
 
 void QuietPhase::affine_forces(const Chain& c, const double* u, double* a, double* b) const {
   // A groove neighbour j of a contact block sits at A_j + B_j t; a stuck neighbour at u_j.
-  std::vector<double> gA(c.N, 0.0), gB(c.N, 0.0);
-  for (const GrooveRun& sg : segs_)
-    for (int r = 0; r < sg.n; ++r) gA[sg.first + r] = A_[sg.offset + r], gB[sg.first + r] = B_[sg.offset + r];
   for (int i = 0; i < c.N; ++i) {
     a[i] = b[i] = 0.0;
     if (!c.contact[i]) continue;
@@ -170,8 +142,8 @@ void QuietPhase::affine_forces(const Chain& c, const double* u, double* a, doubl
     if (K_int_ > 0)
       for (int j : {i - 1, i + 1}) {
         if (j < 0 || j >= c.N) continue;
-        a[i] += K_int_ * ((c.contact[j] ? u[j] : gA[j]) - u[i]);
-        if (!c.contact[j]) b[i] += K_int_ * gB[j];
+        a[i] += K_int_ * ((c.contact[j] ? u[j] : store_.A(j)) - u[i]);
+        if (!c.contact[j]) b[i] += K_int_ * store_.B(j);
       }
   }
 }
@@ -195,7 +167,7 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
       const double tau = affine_crossing(e.fa, e.fb, c.f_static[e.block]);
       if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;
     } else {
-      e.lower = e.march.lower_bound(q0_.data(), p0_.data(), c.f_static[e.block]);
+      e.lower = e.march.lower_bound(store_.q0(), store_.p0(), c.f_static[e.block]);
     }
     order_[k] = static_cast<int>(k);
   }
@@ -203,7 +175,7 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
   for (int k : order_) {
     Edge& e = edges_[k];
     if (e.lower > best) break;
-    const double tau = e.march.first_crossing(q0_.data(), p0_.data(), c.f_static[e.block], best, t0_);
+    const double tau = e.march.first_crossing(store_.q0(), store_.p0(), c.f_static[e.block], best, t0_);
     if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;
   }
   return {t0_ + best, block};

@@ -9,10 +9,11 @@
 // particular solution u_p = A + B t (K_seg B = K_s v 1, K_seg A = b - m gamma B) the modes of
 // K_seg are damped oscillators solved in closed form (damped_mode.hpp).
 //
-// K_seg depends only on (length, left kind, right kind), so its eigendecomposition is computed
-// once per distinct key and shared by all grooves of a periodic pattern (run_basis.hpp). Since the contact
-// mask is fixed, the segments are found once per run; a quiet phase only recomputes A, B and the
-// modal initial conditions.
+// Each segment is a record of the run store (run_store.hpp), with its modes at the phase's start
+// t0: a segment the active set holds already (settled on its path, or a modal groove run) keeps
+// its record, moved to origin t0 by the closed form; any other is projected from the state. The
+// shapes are shared by all grooves of a periodic pattern (run_shape.hpp), and since the contact
+// mask is fixed the segments are found once per run.
 //
 // The next event is the first time a stuck block's driving force reaches +-f_static. A block
 // with stuck neighbours only has an affine force (closed form). A block next to a segment has an
@@ -22,18 +23,12 @@
 // Samples inside a quiet phase are served by sample(): the modal coordinates are advanced from
 // the previous sample by each mode's exact transition matrix over the sample spacing (no
 // transcendental calls), and segments whose modes have died out cost only their affine part.
-#include <functional>
-#include <map>
-#include <tuple>
+#include <cstdint>
 #include <vector>
 
-#include <Eigen/Dense>
-
-#include "springblock/integrate/linear/affine_paths.hpp"
 #include "springblock/integrate/linear/common_slope_sum.hpp"
-#include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
-#include "springblock/integrate/linear/run_basis.hpp"
+#include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
 #include "springblock/observe/observer.hpp"
 
@@ -41,17 +36,18 @@ namespace sb::event_detail {
 
 class QuietPhase {
  public:
-  explicit QuietPhase(const Chain& c);
+  QuietPhase(const Chain& c, RunStore& store);
 
   // Start a quiet phase at time t0 from positions u and velocities v (every contact block
-  // stuck, so its v is 0). on_path(first block of a segment), if given, says the segment is on
-  // its affine path (a settled groove run, written as such into u and v): its modes are taken as
-  // zero instead of projected from the round-off of u - (A + B t0).
-  void begin(const Chain& c, double t0, const double* u, const double* v,
-             const std::function<bool(int)>& on_path = {});
+  // stuck, so its v is 0). A segment the store holds for the active set keeps its record (a
+  // settled one its path, with no modes, rather than modes projected from the round-off of
+  // u - (A + B t0)); the others are projected.
+  void begin(const Chain& c, double t0, const double* u, const double* v);
+  // The phase is over: the records it projected leave the store.
+  void release();
 
   // Exact u, v of every groove block at time t >= t0 (other entries untouched).
-  void evaluate(double t, double* u, double* v) const;
+  void evaluate(double t, double* u, double* v);
   // The same for a sequence of increasing sample times spaced by set_sample_dt's dt (any
   // other spacing falls back to the closed form). With ends_only, only the groove blocks next to
   // a contact block are exact (O(modes) per segment instead of O(n^2)); the others are left
@@ -66,7 +62,7 @@ class QuietPhase {
   // (window_sums may stand in for a whole block of them).
   static constexpr long kSampleBlock = 64;
   void advance_sample(double t, bool ends_only);
-  void write_sample(double t, double* u, double* v, bool ends_only) const;
+  void write_sample(double t, double* u, double* v, bool ends_only);
   // For an observer of mu(t) alone, after advance_sample(t, true): the sums over the contact
   // blocks of |f_i| and f_i at t, without writing a row. The blocks with no groove neighbour have
   // one affine force each and cost O(1) together (CommonSlopeSum); a block beside a groove adds
@@ -76,7 +72,7 @@ class QuietPhase {
   // The same two sums added over the n samples at t_k = k dt, k = k0 .. k0 + n - 1: in closed
   // form for every contact block's force that cannot change sign over them (each |f_i| is then
   // +-f_i, and f_i is affine plus modes, whose sum over equally spaced samples is a geometric
-  // series: RunBasis::sample_sum), sample by sample for a force beside a groove whose sign the
+  // series: RunShape::sample_sum), sample by sample for a force beside a groove whose sign the
   // bounds cannot fix (its segments' end rows by the sample recurrence; the other segments are
   // not visited). Costs two direct evaluations of each live mode instead of a recurrence step and
   // a dot product per mode and sample. The modes are cut where samples cut them
@@ -103,7 +99,7 @@ class QuietPhase {
   // The first threshold crossing in (t0, t_limit].
   Next next_threshold(const Chain& c, double t_limit);
 
-  int distinct_decompositions() const { return bases_.size(); }
+  int distinct_decompositions() const { return store_.shapes().size(); }
 
   // Samples for an observer of contact forces only (sample() with ends_only, sample_affine) drop a
   // segment's modes once every row's transient is below eps_u in u and eps_v in v: the active
@@ -123,8 +119,7 @@ class QuietPhase {
  private:
   struct GrooveRun {
     int first, n;
-    const RunBasis* basis;
-    int offset;  // into the flat per-phase arrays
+    const RunShape* shape;
     bool left_stuck, right_stuck;
     double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
     double sample_dead_tau = 0;  // after this they are below the sample scales (samples skip them)
@@ -134,40 +129,37 @@ class QuietPhase {
     int block;
     int nseg = 0;
     int seg[2] = {-1, -1};
-    int row[2] = {0, 0};  // row of the segment's mode matrix for the adjacent groove block
+    int row[2] = {0, 0};  // the segment's row of the groove block beside it
     EdgeMarch march;
     double lower = 0;  // lower bound on its crossing in the current phase
     double fa = 0, fb = 0;  // its force less the modal part: fa + fb tau (begin)
   };
 
-  // begin()'s work per segment: the particular solution and the modal coordinates of the
-  // deviation from it; the times after which the modes no longer count.
-  void project(const GrooveRun& s, const double* u, const double* v, bool on_path);
+  // begin()'s work per segment: its record at t0; the times after which its modes no longer
+  // count.
+  void take_record(const Chain& c, const GrooveRun& s, const double* u, const double* v);
   void set_dead_times(GrooveRun& s) const;
   // window_sums' and envelope's test (quiet_phase_window.cpp), and an edge's modal reach.
   bool keeps_signs(double tau0, double tau_last, bool need_sums);
   // window_sums' share of the flagged edges: their forces summed sample by sample.
   void unsure_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
   double edge_reach(const Edge& e) const;
-  // u, v of segment s at absolute time t from its modal coordinates q, qd.
-  void to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
-                   double* v) const;
-  // The same for row r of the segment only (q = nullptr: the affine part alone).
-  void row_to_physical(const GrooveRun& s, int r, double t, const double* q, const double* qd, double* u,
-                       double* v) const;
+  // u, v of segment s at time t from its modal coordinates q, qd (slots; dead modes: its path),
+  // every row or (ends_only) the rows beside a contact block.
+  void write_segment(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
+                     double* v, bool ends_only);
 
   double K_int_ = 0, t0_ = 0;
   double slider_slope_ = 0;  // K_s v: the slope of every contact block's force in a quiet phase
-  RunBases bases_;
-  AffineShapes shapes_;
+  RunStore& store_;
+  std::vector<std::int8_t> still_;  // every groove's dir: 0
   std::vector<GrooveRun> segs_;
   std::vector<Edge> edges_;
   std::vector<int> affine_blocks_;     // contact blocks with no groove neighbour
   std::vector<double> affine_a_;       // their force at t0
-  std::vector<double> A_, B_, q0_, p0_;  // flat, one entry per groove block
-  std::vector<double> qs_, qds_;  // modal coordinates at the last sample
+  std::vector<double> qs_, qds_;  // per slot: modal coordinates at the last sample
   std::vector<int> order_;        // edges by increasing lower bound
-  double sample_dt_ = 0, ts_ = 0;
+  double ts_ = 0;
   double sample_eps_u_ = 0, sample_eps_v_ = 0;
   bool sample_valid_ = false;
   std::vector<double> qs_kept_, qds_kept_;  // save_cursor
@@ -176,7 +168,9 @@ class QuietPhase {
   CommonSlopeSum interior_;        // friction_sums: the contact blocks with no groove neighbour
   bool interior_ready_ = false;    // interior_ holds this phase's forces
   std::vector<double> end_dots_;   // friction_sums: per segment, first and last row . q
-  std::vector<double> wq_, wp_, wq1_, wp1_;  // window_sums: modes at the first sample and past the last live one
+  // Per slot, window_sums: modes at the first sample and past the last live one (and evaluate's
+  // scratch).
+  std::vector<double> wq_, wp_, wq1_, wp1_;
   std::vector<double> end_bound_;  // window_sums: per segment, bounds on its first and last rows' modal part
   std::vector<char> unsure_;        // window_sums: per edge, its sign not fixed by the bounds
   std::vector<int> slot_;           // unsure_sums: per segment, its place in row_values_ (-1: none)

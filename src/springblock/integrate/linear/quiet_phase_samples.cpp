@@ -1,5 +1,5 @@
 // The quiet phase's output: the grooves' exact u, v at a time (evaluate) and at the samples
-// inside the phase (sample), from the modal solution begun by QuietPhase::begin.
+// inside the phase (sample), from the segments' records begun by QuietPhase::begin.
 #include <algorithm>
 #include <cmath>
 
@@ -7,75 +7,32 @@
 
 namespace sb::event_detail {
 
-void QuietPhase::to_physical(const GrooveRun& s, double t, bool live, const double* q, const double* qd,
-                             double* u, double* v) const {
-  const RunBasis& d = *s.basis;
-  for (int r = 0; r < s.n; ++r) {
-    u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t;
-    v[s.first + r] = B_[s.offset + r];
+void QuietPhase::write_segment(const GrooveRun& s, double t, bool live, const double* q, const double* qd,
+                               double* u, double* v, bool ends_only) {
+  const RunStore::Run& rec = store_.run(s.first);
+  if (!ends_only) {
+    if (live) store_.write(rec, t, q, qd, u, v);
+    else store_.write_path(rec, t, u, v);
+    return;
   }
-  if (!live) return;
-  // Column-major Q: accumulate mode by mode so the inner loop runs down a contiguous column.
-  for (int k = 0; k < s.n; ++k) {
-    const double* col = d.Q.data() + static_cast<std::ptrdiff_t>(k) * s.n;
-    const double qk = q[k], qdk = qd[k];
-    double* uu = u + s.first;
-    double* vv = v + s.first;
-    for (int r = 0; r < s.n; ++r) {
-      uu[r] += col[r] * qk;
-      vv[r] += col[r] * qdk;
-    }
+  // Interior rows are left as they are: the caller's observer does not read them.
+  for (int i : {s.left_stuck ? s.first : -1, s.right_stuck ? s.first + s.n - 1 : -1}) {
+    if (i < 0) continue;
+    u[i] = live ? store_.row_u(i, t, q) : store_.path_u(i, t);
+    v[i] = live ? store_.row_v(i, qd) : store_.B(i);
   }
 }
 
-void QuietPhase::row_to_physical(const GrooveRun& s, int r, double t, const double* q, const double* qd,
-                                 double* u, double* v) const {
-  const RunBasis& d = *s.basis;
-  double du = 0, dv = 0;
-  if (q != nullptr) {
-    // Row r of Q (stored by column: stride n), or the contiguous copy of an end row; the same
-    // products summed in the same order either way.
-    const bool end_row = r == 0 || r == s.n - 1;
-    const double* row = r == 0 ? d.first_row.data() : r == s.n - 1 ? d.last_row.data() : d.Q.data() + r;
-    const int stride = end_row ? 1 : s.n;
-    for (int k = 0; k < s.n; ++k) {
-      du += row[k * stride] * q[k];
-      dv += row[k * stride] * qd[k];
-    }
-  }
-  u[s.first + r] = A_[s.offset + r] + B_[s.offset + r] * t + du;
-  v[s.first + r] = B_[s.offset + r] + dv;
-}
-
-void QuietPhase::evaluate(double t, double* u, double* v) const {
+void QuietPhase::evaluate(double t, double* u, double* v) {
   const double tau = t - t0_;
-  double q[64], qd[64];  // modes evaluated in blocks of 64: no allocation
   for (const GrooveRun& s : segs_) {
-    const RunBasis& d = *s.basis;
     const bool live = tau <= s.dead_tau;
-    to_physical(s, t, false, nullptr, nullptr, u, v);
-    if (!live) continue;
-    for (int k0 = 0; k0 < s.n; k0 += 64) {
-      const int k1 = std::min(s.n, k0 + 64);
-      DampedMode::eval_all(k1 - k0, [&](int k) -> const DampedMode& { return d.modes[k0 + k]; }, tau,
-                           [&](int k, const DampedMode& m, double e) {
-                             m.eval_decayed(q0_[s.offset + k0 + k], p0_[s.offset + k0 + k], tau, e, q[k], qd[k]);
-                           });
-      for (int k = k0; k < k1; ++k) {
-        const double* col = d.Q.data() + static_cast<std::ptrdiff_t>(k) * s.n;
-        for (int r = 0; r < s.n; ++r) {
-          u[s.first + r] += col[r] * q[k - k0];
-          v[s.first + r] += col[r] * qd[k - k0];
-        }
-      }
-    }
+    if (live) store_.coords(store_.run(s.first), t, wq1_.data(), wp1_.data());
+    write_segment(s, t, live, wq1_.data(), wp1_.data(), u, v, false);
   }
 }
 
-void QuietPhase::set_sample_dt(double dt) {
-  sample_dt_ = dt;
-  bases_.set_sample_dt(dt);
-}
+void QuietPhase::set_sample_dt(double dt) { store_.shapes().set_sample_dt(dt); }
 
 void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
   advance_sample(t, ends_only);
@@ -86,24 +43,16 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
   const double tau = t - t0_;
   // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
   // from that by round-off only. Restart from the closed form at every block start (header).
-  const bool step = sample_valid_ && sample_dt_ > 0 && std::fabs((t - ts_) - sample_dt_) <= 1e-9 * sample_dt_ &&
-                    std::llround(t / sample_dt_) % kSampleBlock != 0;
+  const double dt = store_.shapes().sample_dt();
+  const bool step = sample_valid_ && dt > 0 && std::fabs((t - ts_) - dt) <= 1e-9 * dt &&
+                    std::llround(t / dt) % kSampleBlock != 0;
   for (const GrooveRun& s : segs_) {
     // An observer that reads only contact forces (ends_only) takes the modes as gone once they
     // are below the settle scales; one that reads every row gets them to round-off.
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
     if (!live) continue;
-    double* q = qs_.data() + s.offset;
-    double* qd = qds_.data() + s.offset;
-    const RunBasis& d = *s.basis;
-    if (step) {
-      d.step_sample(q, qd);
-    } else {
-      DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau,
-                           [&](int k, const DampedMode& m, double e) {
-                             m.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau, e, q[k], qd[k]);
-                           });
-    }
+    if (step) s.shape->step_sample(qs_.data() + s.first, qds_.data() + s.first);
+    else store_.coords(store_.run(s.first), t, qs_.data(), qds_.data());
   }
   ts_ = t;
   sample_valid_ = true;
@@ -119,20 +68,11 @@ void QuietPhase::restore_cursor() {
   ts_ = ts_kept_, sample_valid_ = sample_valid_kept_;
 }
 
-void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) const {
+void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) {
   const double tau = t - t0_;
   for (const GrooveRun& s : segs_) {
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
-    const double* q = qs_.data() + s.offset;
-    const double* qd = qds_.data() + s.offset;
-    if (ends_only) {
-      // Interior rows are left as they are: the caller's observer does not read them.
-      const double* lq = live ? q : nullptr;  // dead modes: the affine part alone
-      if (s.left_stuck) row_to_physical(s, 0, t, lq, qd, u, v);
-      if (s.right_stuck) row_to_physical(s, s.n - 1, t, lq, qd, u, v);
-    } else {
-      to_physical(s, t, live, q, qd, u, v);
-    }
+    write_segment(s, t, live, qs_.data(), qds_.data(), u, v, ends_only);
   }
 }
 
@@ -148,7 +88,7 @@ void QuietPhase::friction_sums(double t, double& sum_abs, double& sum_signed) {
   for (std::size_t k = 0; k < segs_.size(); ++k) {
     const GrooveRun& s = segs_[k];
     double first = 0, last = 0;
-    if (tau <= s.sample_dead_tau) s.basis->end_rows(qs_.data() + s.offset, first, last);
+    if (tau <= s.sample_dead_tau) s.shape->end_rows(qs_.data() + s.first, first, last);
     end_dots_[2 * k] = first, end_dots_[2 * k + 1] = last;
   }
   for (const Edge& e : edges_) {

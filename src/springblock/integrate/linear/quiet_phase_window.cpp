@@ -47,15 +47,12 @@ bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
     const GrooveRun& s = segs_[sgi];
     end_bound_[2 * sgi] = end_bound_[2 * sgi + 1] = 0.0;
     if (!(tau0 <= s.sample_dead_tau)) continue;
-    const RunBasis& d = *s.basis;
+    const RunShape& d = *s.shape;
     for (int k = 0; need_sums && k < s.n; ++k)
       if (std::isnan(d.sample_sum[k][0])) return false;  // no closed-form sum for this mode
-    double* q = wq_.data() + s.offset;
-    double* p = wp_.data() + s.offset;
-    DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau0,
-                         [&](int k, const DampedMode& md, double e) {
-                           md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau0, e, q[k], p[k]);
-                         });
+    double* q = wq_.data() + s.first;
+    double* p = wp_.data() + s.first;
+    d.evolve(store_.q0() + s.first, store_.p0() + s.first, tau0, q, p);
     end_bound_[2 * sgi] = row_deviation_bound(d, 0, q, p);
     end_bound_[2 * sgi + 1] = row_deviation_bound(d, s.n - 1, q, p);
   }
@@ -93,20 +90,19 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
     if (!(tau0 <= s.sample_dead_tau)) continue;
     long live = n;
     while (live > 0 && !(tau_of(k0 + live - 1) <= s.sample_dead_tau)) --live;  // rare: dies in the stretch
-    const RunBasis& d = *s.basis;
+    const RunShape& d = *s.shape;
     const double tau1 = tau_of(k0 + live);
-    double* q1 = wq1_.data() + s.offset;
-    double* p1 = wp1_.data() + s.offset;
-    DampedMode::eval_all(s.n, [&](int k) -> const DampedMode& { return d.modes[k]; }, tau1,
-                         [&](int k, const DampedMode& md, double e) {
-                           md.eval_decayed(q0_[s.offset + k], p0_[s.offset + k], tau1, e, q1[k], p1[k]);
-                         });
-    const double* q = wq_.data() + s.offset;
-    const double* p = wp_.data() + s.offset;
+    double* q1 = wq1_.data() + s.first;
+    double* p1 = wp1_.data() + s.first;
+    d.evolve(store_.q0() + s.first, store_.p0() + s.first, tau1, q1, p1);
+    const double* q = wq_.data() + s.first;
+    const double* p = wp_.data() + s.first;
+    const double* first_row = d.row(0);
+    const double* last_row = d.row(s.n - 1);
     double first = 0, last = 0;
     for (int k = 0; k < s.n; ++k) {
       const double Sq = d.sample_sum[k][0] * (q[k] - q1[k]) + d.sample_sum[k][1] * (p[k] - p1[k]);
-      first += d.first_row[k] * Sq, last += d.last_row[k] * Sq;
+      first += first_row[k] * Sq, last += last_row[k] * Sq;
     }
     end_dots_[2 * sgi] = first, end_dots_[2 * sgi + 1] = last;
   }
@@ -168,11 +164,11 @@ void QuietPhase::unsure_sums(long k0, double dt, long n, double& sum_abs, double
   for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
     const GrooveRun& s = segs_[sgi];
     if (slot_[sgi] < 0 || !(tau0 <= s.sample_dead_tau)) continue;
-    const RunBasis& d = *s.basis;
-    double* q = wq1_.data() + s.offset;  // window_sums is done with them: a working copy
-    double* p = wp1_.data() + s.offset;
-    std::copy(wq_.begin() + s.offset, wq_.begin() + s.offset + s.n, q);
-    std::copy(wp_.begin() + s.offset, wp_.begin() + s.offset + s.n, p);
+    const RunShape& d = *s.shape;
+    double* q = wq1_.data() + s.first;  // window_sums is done with them: a working copy
+    double* p = wp1_.data() + s.first;
+    std::copy(wq_.begin() + s.first, wq_.begin() + s.first + s.n, q);
+    std::copy(wp_.begin() + s.first, wp_.begin() + s.first + s.n, p);
     double* first = row_values_.data() + 2 * nn * static_cast<std::size_t>(slot_[sgi]);
     double* last = first + n;
     for (long j = 0; j < n && tau_of(k0 + j) <= s.sample_dead_tau; ++j) {

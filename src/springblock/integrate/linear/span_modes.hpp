@@ -3,9 +3,8 @@
 //
 // While something slides, a run the active set steps (one holding a sliding block, or a
 // grooves-only run still ringing) is, between two switches, a linear system with constant
-// forcing (the equation in modal_runs.hpp). Its motion is its affine particular solution A + B t
-// (the pieces of affine_paths.hpp, less its sliding blocks' kinetic friction) plus its normal
-// modes, each a damped oscillator in closed form (damped_mode.hpp). Nothing is approximated, so
+// forcing (the equation in run_shape.hpp). Its motion is its record in the run store (its affine
+// path A + B t and its normal modes, each a damped oscillator in closed form, run_store.hpp). Nothing is approximated, so
 // there is no error control and no step is ever rejected: the runs advance together by steps of
 // at most H, 0.75 rad of the fastest rate any run of the chain can have. H
 // only sets how often the event screen (events/span_screen.hpp) looks: a full step moves each
@@ -14,18 +13,16 @@
 // the closed form itself. The grid recurrence restarts from the closed form every kResync steps,
 // so its round-off never accumulates.
 //
-// The state lives in the modes: the blocks' u and v in the chain's State are written only when
-// asked (write), at switches and samples. Every mode's energy q'^2 + omega^2 q^2 never grows, so
-// bounds on a row's derivatives taken at the projection hold until the next one (row_bound).
+// The state lives in the modes: the stepper keeps each run's coordinates at its current time and
+// at the end of the step it is taking; the blocks' u and v in the chain's State are written only
+// when asked (write), at switches and samples. The bounds on a row's derivatives are the
+// store's, taken at the projection, which hold until the next one (row_bound).
 #include <cstdint>
 #include <limits>
-#include <map>
-#include <tuple>
 #include <vector>
 
 #include "springblock/integrate/block_range.hpp"
-#include "springblock/integrate/linear/affine_paths.hpp"
-#include "springblock/integrate/linear/run_basis.hpp"
+#include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 
@@ -36,14 +33,14 @@ class SpanModes {
   // Degree of the Taylor polynomials the screen builds over one step (see row_taylor).
   static constexpr int kDegree = 12;
 
-  explicit SpanModes(const Chain& c);
-  // The longest step, H = 0.75 / (the fastest rate of any mode of any run of the chain).
+  SpanModes(const Chain& c, RunStore& store);
+  // The longest step (RunShapes::step_for).
   double H() const { return H_; }
 
   // After a classification at s.t: the runs in `spans`. A run the previous projection had too is
-  // kept as it is (its modes are exact at s.t) if its modes are at s.t and none of its blocks nor
-  // the blocks beside it switched since (switched: per block, 1 if it did); every other run is
-  // projected afresh from s.u and s.v.
+  // kept as it is (its modes are exact at s.t) if its modes are at s.t, its record is still the
+  // one it projected, and none of its blocks nor the blocks beside it switched since (switched:
+  // per block, 1 if it did); every other run is projected afresh from s.u and s.v.
   void project(const Chain& c, const State& s, const std::vector<BlockRange>& spans, const std::uint8_t* switched);
   // The modes at now() + h into the step's end, from those at now(): the grid transition for
   // h == H(), the closed form otherwise.
@@ -56,14 +53,14 @@ class SpanModes {
 
   // Write the current u, v of every run's blocks (ends_only: the two end rows of each run,
   // which are all a contact block's force reads).
-  void write(double* u, double* v, bool ends_only) const;
+  void write(double* u, double* v, bool ends_only);
   // The same for the runs a switch of the given blocks reads: those holding or beside one of
   // them, and every grooves-only run (the active set judges whether it has rung down).
-  void write_near(const std::vector<int>& blocks, double* u, double* v) const;
+  void write_near(const std::vector<int>& blocks, double* u, double* v);
   // The same for the runs none of whose blocks, nor the blocks beside them, switched (switched:
-  // per block), and the modes then forgotten: the next projection keeps no run.
-  void write_untouched(const std::uint8_t* switched, double* u, double* v) const;
-  void forget() { t_ = std::numeric_limits<double>::quiet_NaN(); }
+  // per block), and the runs then let go: the next projection keeps none.
+  void write_untouched(const std::uint8_t* switched, double* u, double* v);
+  void forget();
 
   // Row evaluations of block i, which must be in a run: at the current state (end = false) or
   // at the step's end (end = true, time now() + h of the last advance).
@@ -74,12 +71,12 @@ class SpanModes {
   // factor 2 (x - a is then exact), and within an ulp of x otherwise (a row crossing zero), so
   // the screen may read the state instead.
   bool fresh(int i) const { return spans_[span_of_[i]].fresh; }
-  double u(int i, bool end) const { return A_[i] + B_[i] * (end ? t_ + h_ : t_) + row_dot(i, end ? qn_.data() : q_.data()) + du_[i]; }
-  double v(int i, bool end) const { return B_[i] + row_dot(i, end ? pn_.data() : p_.data()) + dv_[i]; }
-  double a(int i, bool end) const;  // the acceleration
+  double u(int i, bool end) const { return store_.row_u(i, end ? t_ + h_ : t_, end ? qn_.data() : q_.data()) + du_[i]; }
+  double v(int i, bool end) const { return store_.row_v(i, end ? pn_.data() : p_.data()) + dv_[i]; }
+  double a(int i, bool end) const { return store_.row_a(i, end ? qn_.data() : q_.data(), end ? pn_.data() : p_.data()); }
   // A bound on the order-th derivative of u of block i (order 2 to 5) from the projection on, for
-  // the end rows of a run and its sliding blocks.
-  double row_bound(int i, int order) const;
+  // the end rows of a run and its sliding blocks (RunStore::bound).
+  double row_bound(int i, int order) const { return store_.bound(i, order); }
   // u of block i about now() as a polynomial in tau: c[j], j = 0 .. kDegree + 1 (exact to
   // round-off for tau <= H: the remainder is below 0.75^(kDegree+2) / (kDegree+2)! of the
   // modes' amplitude).
@@ -91,56 +88,30 @@ class SpanModes {
   double settled_after(int k, double eps_u, double eps_v) const;
 
  private:
-  struct Shape {
-    const RunBasis* basis;
-    const AffineShapes::Shape* path;
-    std::vector<double> Qr;                  // Q row-major (a block's row is contiguous)
-    std::vector<double> p00, p01, p10, p11;  // per mode: transition over H
-    std::vector<double> w2;                  // per mode: omega^2
-    std::vector<double> c[4];                // per mode: bounds on |q^(j)| per sqrt(energy), j = 2 .. 5
-    std::vector<double> inv_pivot, upper;    // per row: K's tridiagonal factors
-  };
   struct Span {
     int lo, hi;
-    const Shape* shape;
-    double t0;  // projection time of q0_, p0_
-    int since;  // grid steps since the modes were last set from the closed form
-    bool grooves;  // no contact block in it
-    bool fresh;    // projected by the last project()
+    std::int64_t id;  // its record's serial number in the store
+    int since;        // grid steps since the modes were last set from the closed form
+    bool grooves;     // no contact block in it
+    bool fresh;       // projected by the last project()
   };
-  const Shape& shape(int n, bool left, bool right);
   void project_one(const Chain& c, const State& s, Span& sp);
-  // The modes of span sp at tau after (q, p) into (qo, po), by the closed form.
-  void direct(const Span& sp, const double* q, const double* p, double tau, double* qo, double* po) const;
-  // Row of block i (its run's Q row) dotted with the per-slot array x (slots of its run).
-  double row_dot(int i, const double* x) const {
-    const Span& sp = spans_[span_of_[i]];
-    const int n = sp.hi - sp.lo;
-    const double* row = sp.shape->Qr.data() + static_cast<std::size_t>(i - sp.lo) * n;
-    const double* xs = x + sp.lo;
-    double d = 0;
-    for (int k = 0; k < n; ++k) d += row[k] * xs[k];
-    return d;
+  // The store's record of span sp, if it is still the one sp projected (else nullptr: another
+  // user has taken its blocks, and with them the duty to write them).
+  const RunStore::Run* mine(const Span& sp) const {
+    const RunStore::Run* r = store_.exact({sp.lo, sp.hi});
+    return r != nullptr && r->id == sp.id ? r : nullptr;
   }
-  void write_rows(const Span& sp, double* u, double* v) const;
-  void set_bounds(const Span& sp, int row);
+  void write_rows(const Span& sp, double* u, double* v);
 
   int N_;
-  double K_s_, K_int_, m_, gamma_, H_, t_ = 0, h_ = 0;  // h_: the last advance
-  RunBases bases_;
-  AffineShapes paths_;
-  std::map<std::tuple<int, bool, bool>, Shape> shapes_;
-  std::vector<const Shape*> index_;  // shapes_ by 4 n + 2 left + right
+  double H_, t_ = 0, h_ = 0;  // h_: the last advance
+  RunStore& store_;
   std::vector<Span> spans_, kept_;
   std::vector<BlockRange> ranges_;
-  std::vector<int> span_of_;              // block -> index in spans_ (-1: none)
-  std::vector<double> A_, B_;             // per block: particular solution
-  std::vector<double> du_, dv_;           // per block: the projection's round-off (project_one)
-  std::vector<double> bound_[4];          // per block: row_bound of orders 2 to 5 (end and sliding rows)
-  std::vector<double> q_, p_, qn_, pn_;   // per mode slot (run lo + k): current and step end
-  std::vector<double> q0_, p0_, sE_;      // at the projection: modes, sqrt of their energies
-  std::vector<double> rhs_;
-  mutable std::vector<double> scratch_u_, scratch_v_;  // write_rows: a run's Q q and Q p
+  std::vector<int> span_of_;             // block -> index in spans_ (-1: none)
+  std::vector<double> du_, dv_;          // per block: the projection's round-off (project_one)
+  std::vector<double> q_, p_, qn_, pn_;  // per mode slot (run lo + k): current and step end
 };
 
 }  // namespace sb::event_detail

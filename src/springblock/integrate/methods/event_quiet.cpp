@@ -34,15 +34,14 @@ bool EventRun::quiet_phase() {
   QuietPhase::Next next;
   {
     WorkTimer timer(s_.work, s_.work.quiet_s);
-    // Settled grooves are on their affine path: their modes are zero (active_set.hpp).
-    quiet_->begin(c_, s_.t, s_.u.data(), s_.v.data(),
-                  [&](int i) { return active_.kind(i) == ActiveSet::kSettled; });
+    quiet_->begin(c_, s_.t, s_.u.data(), s_.v.data());
     next = quiet_->next_threshold(c_, t_end_);
   }
   if (!serve_quiet_samples(next.t)) return false;
   {
     WorkTimer timer(s_.work, s_.work.quiet_s);
     quiet_->evaluate(next.t, s_.u.data(), s_.v.data());
+    quiet_->release();
   }
   s_.t = next.t;
   {

@@ -17,25 +17,26 @@ EventRun::EventRun(const Chain& c, State& s, double t_end, double sample_dt, Obs
       dp_(c.N),
       search_(c.N),
       sw_(c.N),
+      shapes_(c),
+      store_(c, shapes_),
       // Settled grooves are a form of fast-forward (they drop a transient below the tolerance),
       // so they follow the same switch; the closed-form crossings of stuck blocks are exact
       // either way.
-      active_(c, opt.fast_forward, control_.atol_u(), control_.atol_v(), opt.modal_max_run, opt.modal_max_groove,
-              t_end),
+      active_(c, store_, opt.fast_forward, control_.atol_u(), control_.atol_v(), opt.modal_max_run,
+              opt.modal_max_groove, t_end),
       clock_(sample_dt, s.t),
       sample_(s),
       fa_(c.N),
       fb_(c.N) {
-  active_.set_sample_dt(sample_dt);
+  shapes_.set_sample_dt(sample_dt);
   if (opt.exact_stepper) {
-    spans_ = std::make_unique<SpanModes>(c);
+    spans_ = std::make_unique<SpanModes>(c, store_);
     screen_ = std::make_unique<SpanScreen>(c);
     spans_friction_only_ = obs.reads_only_friction();
     spans_switched_.assign(c.N, 0);
   }
   if (opt.fast_forward) {
-    quiet_ = std::make_unique<QuietPhase>(c);
-    quiet_->set_sample_dt(sample_dt);
+    quiet_ = std::make_unique<QuietPhase>(c, store_);
     if (ends_only_) quiet_->set_sample_scales(active_.settle_eps_u(), active_.settle_eps_v());
   }
 }

@@ -20,6 +20,7 @@
 #include "springblock/integrate/events/span_screen.hpp"
 #include "springblock/integrate/events/switching.hpp"
 #include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/integrate/linear/span_modes.hpp"
 #include "springblock/integrate/methods/step_control.hpp"
 #include "springblock/integrate/step/dopri5.hpp"
@@ -111,6 +112,10 @@ class EventRun {
   Dopri5 dp_;
   EventSearch search_;
   Switching sw_;
+  // The exact runs' shapes and records, shared by the active set, the exact stepper and the
+  // quiet phase (run_store.hpp).
+  RunShapes shapes_;
+  RunStore store_;
   ActiveSet active_;
   std::unique_ptr<QuietPhase> quiet_;
   // The exact stepper (opt.exact_stepper): the stepped runs' modes and their event screen, valid

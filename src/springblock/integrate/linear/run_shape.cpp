@@ -1,0 +1,173 @@
+#include "springblock/integrate/linear/run_shape.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "springblock/integrate/linear/edge_march.hpp"
+
+namespace sb::event_detail {
+namespace {
+
+// The longest step of the exact stepper in radians of the fastest rate: a step turns every mode
+// by at most 0.75 rad, so the screen's Hermite allowance M4 H^4 / 384 is ~1/1200 of a row's
+// amplitude and the Taylor remainder over a step (degree 13 of u, so 12 of its velocity) below
+// 0.75^14 / 14! ~ 2e-13 of it. Chosen by measurement (paper/choices.md, Integration): 0.5 rad with
+// degree 10 and 1 rad with degree 14 cost a few per cent more per switch, 0.35 rad with degree 8
+// some 5 % more.
+constexpr double kStepRadians = 0.75;
+
+// The modes of a run in closed form. Its stiffness is K_s I + K_int L, L the Laplacian of a path
+// of n blocks whose end rows lose their outer spring at a free chain end. With every block alike,
+// L's eigenvectors are sampled sines and cosines (the discrete sine and cosine transforms),
+// j = 0 .. n-1 the row, k = 0 .. n-1 the mode, eigenvalue 2 - 2 cos theta:
+//   held at both ends (u_-1 = u_n = 0):     sin(theta (j + 1)),   theta = pi (k + 1) / (n + 1)
+//   free left, held right (u_-1 = u_0):     cos(theta (j + 1/2)), theta = pi (2k + 1) / (2n + 1)
+//   held left, free right:                  the same, mirrored (j -> n - 1 - j)
+//   free at both ends:                      cos(theta (j + 1/2)), theta = pi k / n
+// Each column is normalised by its computed norm, and the eigenvalues rise with k, as a
+// symmetric eigensolver would order them. O(n^2) per shape, against O(n^3) for the solver, which
+// the runs of many lengths of the exact stepper ask for once per repetition each.
+void closed_form_modes(double K_s, double K_int, int n, bool left, bool right, Eigen::MatrixXd& Q,
+                       std::vector<double>& lambda) {
+  const double pi = 3.14159265358979323846;
+  Q.resize(n, n);
+  lambda.resize(n);
+  for (int k = 0; k < n; ++k) {
+    double theta;
+    if (left && right) theta = pi * (k + 1) / (n + 1);
+    else if (left || right) theta = pi * (2 * k + 1) / (2 * n + 1);
+    else theta = pi * k / n;
+    double norm2 = 0;
+    for (int j = 0; j < n; ++j) {
+      const int jj = (left && !right) ? n - 1 - j : j;  // the free end at row 0
+      const double x = (left && right) ? std::sin(theta * (jj + 1)) : std::cos(theta * (jj + 0.5));
+      Q(j, k) = x;
+      norm2 += x * x;
+    }
+    const double inv = 1.0 / std::sqrt(norm2);
+    for (int j = 0; j < n; ++j) Q(j, k) *= inv;
+    lambda[k] = K_s + K_int * (2.0 - 2.0 * std::cos(theta));
+  }
+}
+
+// The same, kept per thread: every repetition of a scene asks for the same shapes (their cosines
+// are most of a projection's cost on the first call), and the closed form is the same doubles
+// whoever computes it, so results do not depend on the thread count.
+void cached_modes(double K_s, double K_int, int n, bool left, bool right, Eigen::MatrixXd& Q,
+                  std::vector<double>& lambda) {
+  struct Modes {
+    Eigen::MatrixXd Q;
+    std::vector<double> lambda;
+  };
+  thread_local std::map<std::tuple<double, double, int, bool, bool>, Modes> cache;
+  const auto key = std::make_tuple(K_s, K_int, n, left, right);
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    Modes m;
+    closed_form_modes(K_s, K_int, n, left, right, m.Q, m.lambda);
+    it = cache.emplace(key, std::move(m)).first;
+  }
+  Q = it->second.Q;
+  lambda = it->second.lambda;
+}
+
+// K's symmetric tridiagonal elimination (Thomas' algorithm: K is diagonally dominant, so no
+// pivoting is needed). Written here rather than taken from GSL, whose tridiagonal solver
+// factors K again for every right-hand side: a projection solves one per run.
+void factor(RunShape& sh) {
+  const int n = sh.n;
+  sh.inv_pivot.resize(n);
+  sh.upper.assign(n, 0.0);
+  for (int k = 0; k < n; ++k) {
+    const double pivot = k == 0 ? sh.diag[0] : sh.diag[k] - sh.off[k - 1] * sh.upper[k - 1];
+    sh.inv_pivot[k] = 1.0 / pivot;
+    if (k + 1 < n) sh.upper[k] = sh.off[k] / pivot;
+  }
+}
+
+}  // namespace
+
+void RunShape::solve(const double* f, double* y) const {
+  for (int r = 0; r < n; ++r) y[r] = (r == 0 ? f[0] : f[r] - off[r - 1] * y[r - 1]) * inv_pivot[r];
+  for (int r = n - 2; r >= 0; --r) y[r] -= upper[r] * y[r + 1];
+}
+
+Eigen::MatrixXd RunShape::stiffness() const {
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  for (int r = 0; r < n; ++r) {
+    K(r, r) = diag[r];
+    if (r + 1 < n) K(r, r + 1) = K(r + 1, r) = off[r];
+  }
+  return K;
+}
+
+double RunShapes::step_for(const Chain& c) {
+  // Every run's modes are below sqrt((K_s + 4 K_int) / m); an overdamped mode decays no faster
+  // than gamma. The step is set by the faster of the two, so the Taylor bound above holds for all.
+  return kStepRadians / std::max(c.omega_max(), c.gamma);
+}
+
+RunShapes::RunShapes(const Chain& c)
+    : N_(c.N), K_s_(c.K_s), K_int_(c.K_int), m_(c.m), gamma_(c.gamma), v_(c.v_slider), step_(step_for(c)),
+      march_step_(EdgeMarch::grid_step(c.omega_max())) {}
+
+const RunShape& RunShapes::get(int n, bool left, bool right) {
+  const std::size_t slot = 4 * static_cast<std::size_t>(n) + 2 * left + right;
+  if (slot >= index_.size()) index_.resize(slot + 1, nullptr);
+  if (index_[slot] != nullptr) return *index_[slot];
+  RunShape sh;
+  sh.n = n, sh.left = left, sh.right = right;
+  for (int k = 0; k < n; ++k) sh.diag.push_back(K_s_ + ((k > 0 || left) ? K_int_ : 0.0) + ((k + 1 < n || right) ? K_int_ : 0.0));
+  sh.off.assign(std::max(n - 1, 0), -K_int_);
+  factor(sh);
+  // The affine path's pieces, each K^-1 of its forcing.
+  sh.B.assign(n, K_s_ * v_);
+  sh.solve(sh.B.data(), sh.B.data());
+  sh.a0.resize(n), sh.gL.assign(n, 0.0), sh.gR.assign(n, 0.0);
+  for (int k = 0; k < n; ++k) sh.a0[k] = -m_ * gamma_ * sh.B[k];
+  sh.solve(sh.a0.data(), sh.a0.data());
+  if (left) sh.gL[0] = K_int_, sh.solve(sh.gL.data(), sh.gL.data());
+  if (right) sh.gR[n - 1] = K_int_, sh.solve(sh.gR.data(), sh.gR.data());
+  // The modes, their transitions and the constants of the derivative bounds: from
+  // q'' = -gamma q' - omega^2 q and omega |q| <= sqrt(E), |q''| <= (gamma + omega) sqrt(E) and
+  // q^(j+2) = -gamma q^(j+1) - omega^2 q^(j) for the higher ones.
+  cached_modes(K_s_, K_int_, n, left, right, sh.Q, sh.lambda);
+  sh.Qr.resize(static_cast<std::size_t>(n) * n);
+  for (int r = 0; r < n; ++r)
+    for (int k = 0; k < n; ++k) sh.Qr[static_cast<std::size_t>(r) * n + k] = sh.Q(r, k);
+  for (int k = 0; k < n; ++k) {
+    const DampedMode m(0.5 * gamma_, sh.lambda[k] / m_);
+    sh.modes.push_back(m);
+    sh.w2.push_back(m.omega2);
+    const Transition P = m.transition(step_);
+    sh.p00.push_back(P[0]), sh.p01.push_back(P[1]), sh.p10.push_back(P[2]), sh.p11.push_back(P[3]);
+    sh.march.push_back(m.transition(march_step_));
+    const double c2 = gamma_ + m.omega, c3 = gamma_ * c2 + m.omega2;
+    const double c4 = gamma_ * c3 + m.omega2 * c2, c5 = gamma_ * c4 + m.omega2 * c3;
+    sh.c[0].push_back(c2), sh.c[1].push_back(c3), sh.c[2].push_back(c4), sh.c[3].push_back(c5);
+  }
+  if (sample_dt_ > 0) set_sample_transitions(sh);
+  index_[slot] = &shapes_.emplace(std::make_tuple(n, left, right), std::move(sh)).first->second;
+  return *index_[slot];
+}
+
+void RunShapes::set_sample_transitions(RunShape& sh) const {
+  sh.sample.clear();
+  sh.sample_sum.clear();
+  for (const DampedMode& m : sh.modes) {
+    const Transition P = m.transition(sample_dt_);
+    sh.sample.push_back(P);
+    const double det = (1.0 - P[0]) * (1.0 - P[3]) - P[1] * P[2];
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    sh.sample_sum.push_back(std::fabs(det) < 1e-6 ? std::array<double, 2>{nan, nan}
+                                                  : std::array<double, 2>{(1.0 - P[3]) / det, P[1] / det});
+  }
+}
+
+void RunShapes::set_sample_dt(double dt) {
+  sample_dt_ = dt;
+  for (auto& [key, sh] : shapes_) set_sample_transitions(sh);
+}
+
+}  // namespace sb::event_detail

@@ -1,0 +1,112 @@
+#pragma once
+// What the shape of a run determines, computed once and shared by everything that moves runs
+// exactly (the run store and its users: the quiet phase, the modal runs, the exact stepper).
+//
+// A run is n consecutive mobile blocks (grooves or sliding blocks) between stuck blocks or chain
+// ends. Between two switches it is the linear system
+//   m u'' + m gamma u' + K u = K_s v t 1 + K_int (u_left e_1 + u_right e_n) - f_kin,
+// K its stiffness: tridiagonal, K_s plus one K_int per neighbour that exists (a block of the run,
+// or the stuck block at an end that is held) on the diagonal, -K_int beside it. Everything that
+// depends on K and not on the run's position or forcing lives here:
+//   * K's factors (one symmetric tridiagonal elimination): K^-1 of any right-hand side in O(n),
+//     the one way K is inverted, for the affine path and for the kinetic friction alike;
+//   * the affine path's pieces: u_p = A + B t with K B = K_s v 1 and
+//     A = a0 + u_left gL + u_right gR - K^-1 f_kin, a0 = K^-1 (-m gamma B), gL, gR = K^-1 K_int e_1, e_n;
+//   * the modes: K's orthonormal eigenvectors Q (by column, and by row in Qr: a block's row is
+//     contiguous) and each mode's damped oscillator (damped_mode.hpp);
+//   * each mode's exact transition over the steps the users take (the sample spacing, the exact
+//     stepper's grid step, EdgeMarch's grid step), and the constants of the bounds on a row's
+//     derivatives.
+// On a chain of identical blocks K depends only on (n, left held, right held) and its modes are
+// sampled sines and cosines (run_shape.cpp), so the shapes are keyed by that triple. A chain of
+// blocks that differ keys them by the run's blocks instead and diagonalises K itself: that is
+// the general case, and these closed forms its fast special case.
+#include <array>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "springblock/integrate/block_range.hpp"
+#include "springblock/integrate/linear/damped_mode.hpp"
+#include "springblock/model.hpp"
+
+namespace sb::event_detail {
+
+struct RunShape {
+  int n = 0;
+  bool left = false, right = false;  // held by a stuck block at that end (else a free chain end)
+  std::vector<double> diag, off;     // K: diagonal, and the n - 1 entries beside it
+  std::vector<double> inv_pivot, upper;  // K's elimination: 1 / pivot_r, and -off_r / pivot_r
+  std::vector<double> B, a0, gL, gR;     // the affine path's pieces (above)
+  Eigen::MatrixXd Q;                     // modes by column, orthonormal, eigenvalues rising
+  std::vector<double> Qr;                // the same by row
+  std::vector<double> lambda;            // eigenvalues of K (stiffnesses of the modes)
+  std::vector<DampedMode> modes;         // alpha = gamma / 2, omega^2 = lambda / m
+  std::vector<double> w2;                // omega^2 per mode, contiguous
+  // Per mode, bounds on |q^(j)| per sqrt of its energy q'^2 + omega^2 q^2, j = 2 .. 5 (c[j - 2]).
+  std::vector<double> c[4];
+  // Per mode: the transition over the sample spacing, and the first row of (I - P)^-1 for the
+  // sum of a mode over consecutive samples in closed form (NaN where I - P is too near singular:
+  // an undamped mode that turns by a multiple of 2 pi).
+  std::vector<Transition> sample;
+  std::vector<std::array<double, 2>> sample_sum;
+  std::vector<double> p00, p01, p10, p11;  // per mode: transition over the exact stepper's step
+  std::vector<Transition> march;           // per mode: transition over EdgeMarch's grid step
+
+  const double* row(int r) const { return Qr.data() + static_cast<std::size_t>(r) * n; }
+  // Modes k0 .. k0 + m - 1 (every mode by default) from (q, p) moved on by tau >= 0 in closed
+  // form into (qo, po); the four arrays start at mode k0.
+  void evolve(const double* q, const double* p, double tau, double* qo, double* po, int k0 = 0, int m = -1) const {
+    DampedMode::eval_all(
+        m < 0 ? n : m, [&](int k) -> const DampedMode& { return modes[k0 + k]; }, tau,
+        [&](int k, const DampedMode& md, double e) { md.eval_decayed(q[k], p[k], tau, e, qo[k], po[k]); });
+  }
+  // y = K^-1 f (y may be f).
+  void solve(const double* f, double* y) const;
+  // The dense K (checks and diagnostics).
+  Eigen::MatrixXd stiffness() const;
+  // The modes (q, q') one sample spacing on.
+  void step_sample(double* q, double* qd) const {
+    for (int k = 0; k < n; ++k) {
+      const double a = q[k], b = qd[k];
+      const Transition& P = sample[k];
+      q[k] = P[0] * a + P[1] * b;
+      qd[k] = P[2] * a + P[3] * b;
+    }
+  }
+  // The first and last rows' modal parts, Q's end rows . q.
+  void end_rows(const double* q, double& first, double& last) const {
+    first = last = 0;
+    const double* f = row(0);
+    const double* l = row(n - 1);
+    for (int k = 0; k < n; ++k) first += f[k] * q[k], last += l[k] * q[k];
+  }
+};
+
+class RunShapes {
+ public:
+  // Transitions over the exact stepper's step (step_for) and EdgeMarch's grid step.
+  explicit RunShapes(const Chain& c);
+  // The shape of run r of the chain. References stay valid for the life of this object.
+  const RunShape& of(BlockRange r) { return get(r.size(), r.lo > 0, r.hi < N_); }
+  const RunShape& get(int n, bool left, bool right);
+  // Sample transitions of every shape, present and future.
+  void set_sample_dt(double dt);
+  double sample_dt() const { return sample_dt_; }
+  double step() const { return step_; }
+  double march_step() const { return march_step_; }
+  int size() const { return static_cast<int>(shapes_.size()); }
+  // The exact stepper's step for chain c: 0.75 rad of the fastest rate any run's mode can have.
+  static double step_for(const Chain& c);
+
+ private:
+  void set_sample_transitions(RunShape& sh) const;
+  int N_;
+  double K_s_, K_int_, m_, gamma_, v_, step_, march_step_, sample_dt_ = 0;
+  std::map<std::tuple<int, bool, bool>, RunShape> shapes_;
+  std::vector<const RunShape*> index_;  // shapes_ by 4 n + 2 left + right: every projection looks one up
+};
+
+}  // namespace sb::event_detail

@@ -1,0 +1,216 @@
+#include "springblock/integrate/linear/run_store.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "springblock/kernel_clones.hpp"
+
+namespace sb::event_detail {
+namespace {
+
+// q = Q^T x and p = Q^T y for the n x n Q given by rows (Qr), accumulated row by row: the loop
+// over modes vectorises, and each mode still sums its rows in order.
+SB_KERNEL_CLONES void rows_times(int n, const double* __restrict Qr, const double* __restrict x,
+                                 const double* __restrict y, double* __restrict q, double* __restrict p) {
+  for (int k = 0; k < n; ++k) q[k] = 0.0, p[k] = 0.0;
+  for (int r = 0; r < n; ++r) {
+    const double* row = Qr + static_cast<std::size_t>(r) * n;
+    const double xr = x[r], yr = y[r];
+    for (int k = 0; k < n; ++k) {
+      q[k] += row[k] * xr;
+      p[k] += row[k] * yr;
+    }
+  }
+}
+
+// su = Q q and sv = Q p for the n x n column-major Q, accumulated mode by mode: the loop over
+// rows vectorises, and each row sums its modes in row_dot's order (the same doubles).
+SB_KERNEL_CLONES void columns_times(int n, const double* __restrict Q, const double* __restrict q,
+                                    const double* __restrict p, double* __restrict su, double* __restrict sv) {
+  for (int r = 0; r < n; ++r) su[r] = 0.0, sv[r] = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double* col = Q + static_cast<std::size_t>(k) * n;
+    const double qk = q[k], pk = p[k];
+    for (int r = 0; r < n; ++r) {
+      su[r] += col[r] * qk;
+      sv[r] += col[r] * pk;
+    }
+  }
+}
+
+}  // namespace
+
+RunStore::RunStore(const Chain& c, RunShapes& shapes)
+    : N_(c.N),
+      gamma_(c.gamma),
+      shapes_(shapes),
+      runs_(c.N),
+      first_(c.N, -1),
+      A_(c.N),
+      B_(c.N),
+      q0_(c.N),
+      p0_(c.N),
+      sE_(c.N),
+      x_(c.N),
+      y_(c.N),
+      su_(c.N),
+      sv_(c.N) {
+  for (auto& b : bound_) b.assign(c.N, std::numeric_limits<double>::infinity());
+}
+
+RunStore::Run& RunStore::claim(BlockRange r, Owner owner) {
+  for (int i = r.lo; i < r.hi; ++i)
+    if (first_[i] >= 0) drop(first_[i]);
+  std::fill(first_.begin() + r.lo, first_.begin() + r.hi, r.lo);
+  Run& run = runs_[r.lo];
+  run = Run{r.lo, r.hi, &shapes_.of(r), 0.0, false, owner, ++serial_};
+  return run;
+}
+
+void RunStore::drop(int lo) {
+  const Run& r = runs_[lo];
+  std::fill(first_.begin() + r.lo, first_.begin() + r.hi, -1);
+}
+
+void RunStore::clear() { std::fill(first_.begin(), first_.end(), -1); }
+
+const RunStore::Run* RunStore::exact(BlockRange r) const {
+  if (first_[r.lo] != r.lo || runs_[r.lo].hi != r.hi) return nullptr;
+  return &runs_[r.lo];
+}
+
+// A = a0 + u_left gL + u_right gR - K^-1 f_kin and B from the shape's pieces (run_shape.hpp).
+void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir) {
+  const RunShape& sh = *run.shape;
+  const int lo = run.lo, n = run.n();
+  const double uL = sh.left ? u[lo - 1] : 0.0, uR = sh.right ? u[run.hi] : 0.0;
+  for (int k = 0; k < n; ++k) {
+    A_[lo + k] = sh.a0[k] + uL * sh.gL[k] + uR * sh.gR[k];
+    B_[lo + k] = sh.B[k];
+  }
+  bool friction = false;
+  for (int k = 0; k < n && !friction; ++k) friction = dir[lo + k] != 0;
+  if (!friction) return;
+  double* f = x_.data();
+  for (int k = 0; k < n; ++k) f[k] = dir[lo + k] * c.f_kinetic[lo + k];
+  sh.solve(f, f);
+  for (int k = 0; k < n; ++k) A_[lo + k] -= f[k];
+}
+
+const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, const double* u, const double* v,
+                                       const std::int8_t* dir, Owner owner, bool with_modes) {
+  Run& run = claim(r, owner);
+  run.t0 = t;
+  run.modes = with_modes;
+  set_path(c, run, u, dir);
+  const int lo = r.lo, n = r.size();
+  if (!with_modes) {
+    std::fill(q0_.begin() + lo, q0_.begin() + r.hi, 0.0);
+    std::fill(p0_.begin() + lo, p0_.begin() + r.hi, 0.0);
+    std::fill(sE_.begin() + lo, sE_.begin() + r.hi, 0.0);
+  } else {
+    ++projections;
+    for (int k = 0; k < n; ++k) {
+      x_[k] = u[lo + k] - A_[lo + k] - B_[lo + k] * t;
+      y_[k] = v[lo + k] - B_[lo + k];
+    }
+    rows_times(n, run.shape->Qr.data(), x_.data(), y_.data(), q0_.data() + lo, p0_.data() + lo);
+    for (int k = 0; k < n; ++k) {
+      const double qk = q0_[lo + k], pk = p0_[lo + k];
+      sE_[lo + k] = std::sqrt(pk * pk + run.shape->w2[k] * qk * qk);
+    }
+  }
+  set_bounds(run, dir);
+  return run;
+}
+
+void RunStore::set_bounds(const Run& run, const std::int8_t* dir) {
+  const int n = run.n();
+  for (int row = 0; row < n; ++row) {
+    const int i = run.lo + row;
+    if (row != 0 && row != n - 1 && dir[i] == 0) {
+      for (auto& b : bound_) b[i] = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    bound_[0][i] = row_deviation_bound(*run.shape, row, q0_.data() + run.lo, p0_.data() + run.lo);
+    double d[4];
+    row_derivative_bounds(*run.shape, row, sE_.data() + run.lo, d);
+    for (int j = 0; j < 4; ++j) bound_[j + 1][i] = d[j];
+  }
+}
+
+void RunStore::to_path(int lo, Owner owner) {
+  Run& run = runs_[lo];
+  run.owner = owner;
+  run.modes = false;
+  for (int i = run.lo; i < run.hi; ++i) {
+    q0_[i] = p0_[i] = sE_[i] = 0.0;
+    for (auto& b : bound_) b[i] = 0.0;
+  }
+}
+
+void RunStore::rebase(int lo, double t) {
+  Run& run = runs_[lo];
+  if (run.modes) coords(run, t, q0_.data(), p0_.data());
+  run.t0 = t;
+}
+
+void RunStore::coords(const Run& r, double t, double* q, double* p) const {
+  r.shape->evolve(q0_.data() + r.lo, p0_.data() + r.lo, t - r.t0, q + r.lo, p + r.lo);
+}
+
+double RunStore::u(int i, double t) const {
+  const Run& r = runs_[first_[i]];
+  if (!r.modes) return path_u(i, t);
+  double q[64], p[64];  // the modes in blocks of 64: no allocation
+  const double* row = r.shape->row(i - r.lo);
+  const double tau = t - r.t0;
+  double d = 0;
+  for (int k0 = 0; k0 < r.n(); k0 += 64) {
+    const int m = std::min(r.n() - k0, 64);
+    r.shape->evolve(q0_.data() + r.lo + k0, p0_.data() + r.lo + k0, tau, q, p, k0, m);
+    for (int k = 0; k < m; ++k) d += row[k0 + k] * q[k];
+  }
+  return path_u(i, t) + d;
+}
+
+double RunStore::row_a(int i, const double* q, const double* p) const {
+  const Run& r = runs_[first_[i]];
+  const int n = r.n();
+  const double* row = r.shape->row(i - r.lo);
+  const double* w2 = r.shape->w2.data();
+  double d = 0;
+  for (int k = 0; k < n; ++k) d += row[k] * (-gamma_ * p[r.lo + k] - w2[k] * q[r.lo + k]);
+  return d;
+}
+
+void RunStore::write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only) {
+  const int n = r.n();
+  if (ends_only && n > 2) {
+    for (int i : {r.lo, r.hi - 1}) u[i] = row_u(i, t, q), v[i] = row_v(i, p);
+    return;
+  }
+  columns_times(n, r.shape->Q.data(), q + r.lo, p + r.lo, su_.data(), sv_.data());
+  for (int k = 0; k < n; ++k) {
+    const int i = r.lo + k;
+    u[i] = path_u(i, t) + su_[k];
+    v[i] = B_[i] + sv_[k];
+  }
+}
+
+void RunStore::write_path(const Run& r, double t, double* u, double* v) const {
+  for (int i = r.lo; i < r.hi; ++i) u[i] = path_u(i, t), v[i] = B_[i];
+}
+
+void RunStore::taylor(int i, double t, const double* q, const double* p, int deg, double* c) const {
+  const Run& r = runs_[first_[i]];
+  const double* row = r.shape->row(i - r.lo);
+  c[0] = path_u(i, t);
+  c[1] = B_[i];
+  for (int j = 2; j <= deg; ++j) c[j] = 0.0;
+  for (int k = 0; k < r.n(); ++k) add_taylor(row[k], q[r.lo + k], p[r.lo + k], gamma_, r.shape->w2[k], deg, c);
+  taylor_scale(deg, c);
+}
+
+}  // namespace sb::event_detail

@@ -1,0 +1,122 @@
+#pragma once
+// The exact state of every run whose motion is known in closed form, in one place.
+//
+// Between two switches a run (run_shape.hpp) moves as its affine path A + B t plus its modes,
+// each a damped oscillator started from (q0, p0) at the run's origin t0:
+//   u = A + B t + Q q(t - t0),   v = B + Q q'(t - t0).
+// A record holds exactly that: the run's blocks, its shape, A and B per block, q0 and p0 per
+// mode (mode k of the run starting at block lo sits in slot lo + k, so the slots of disjoint
+// runs never meet and any per-slot array of a user lines up with the store's), and t0. Every
+// exact treatment of a run is a user of its record: a settled groove run is a record without
+// modes; a modal run, a run of the exact stepper and a groove segment of a quiet phase are
+// records with modes plus what each user keeps on its own (a sample cursor, the stepper's
+// current coordinates, event searches). The mathematics every user needs is written here once:
+// the projection of a state onto a run (one application of K^-1, one change to modal
+// coordinates), the closed form at any time, a block's u, v and acceleration from a run's
+// coordinates, the write-back into the chain's state, the bounds that hold for all later times,
+// and a row's Taylor polynomial.
+//
+// Each record has an owner (the user that made it); a projection over blocks another record
+// holds drops that record, and an owner drops its records when it lets the runs go, so what the
+// store holds is always current. Records carry the serial number of their projection, so a
+// user that keeps a run across switches can tell whether it is still the one it projected.
+#include <cstdint>
+#include <vector>
+
+#include "springblock/integrate/block_range.hpp"
+#include "springblock/integrate/linear/envelope.hpp"
+#include "springblock/integrate/linear/run_shape.hpp"
+#include "springblock/model.hpp"
+
+namespace sb::event_detail {
+
+class RunStore {
+ public:
+  enum Owner : std::uint8_t { kNone, kSettled, kModal, kSpan, kQuiet };
+  struct Run {
+    int lo = 0, hi = 0;
+    const RunShape* shape = nullptr;
+    double t0 = 0;       // origin of q0, p0
+    bool modes = false;  // false: on its affine path (q0 = p0 = 0, nothing to evaluate)
+    Owner owner = kNone;
+    std::int64_t id = 0;  // serial number of the projection that made it
+    int n() const { return hi - lo; }
+  };
+
+  RunStore(const Chain& c, RunShapes& shapes);
+  RunShapes& shapes() { return shapes_; }
+
+  // Run r projected from the state at time t (u, v; its sliding blocks' kinetic friction from
+  // dir): its affine path, and the modal coordinates of u's and v's deviation from it
+  // (with_modes = false: on its path, the deviation taken as zero). Bounds are taken for its end
+  // rows and sliding blocks (bound()).
+  const Run& project(const Chain& c, BlockRange r, double t, const double* u, const double* v,
+                     const std::int8_t* dir, Owner owner, bool with_modes = true);
+  // The run starting at block lo, taken onto its affine path (its modes dropped) by owner.
+  void to_path(int lo, Owner owner);
+  // The run starting at block lo with its coordinates moved to origin t (the closed form).
+  void rebase(int lo, double t);
+  void drop(int lo);
+  void clear();
+
+  bool holds(int i) const { return first_[i] >= 0; }
+  const Run& run(int i) const { return runs_[first_[i]]; }
+  Owner owner(int i) const { return first_[i] >= 0 ? runs_[first_[i]].owner : kNone; }
+  // The record spanning exactly r, or nullptr.
+  const Run* exact(BlockRange r) const;
+
+  double A(int i) const { return A_[i]; }
+  double B(int i) const { return B_[i]; }
+  double path_u(int i, double t) const { return A_[i] + B_[i] * t; }
+  const double* q0() const { return q0_.data(); }
+  const double* p0() const { return p0_.data(); }
+
+  // The modes of run r at t into slots r.lo .. of q, p.
+  void coords(const Run& r, double t, double* q, double* p) const;
+  // u of block i at t from its run's record (direct evaluation).
+  double u(int i, double t) const;
+  // Block i's u at t, v and acceleration from its run's coordinates q, p (slots) at that time.
+  double row_u(int i, double t, const double* q) const { return path_u(i, t) + row_dot(i, q); }
+  double row_v(int i, const double* p) const { return B_[i] + row_dot(i, p); }
+  double row_a(int i, const double* q, const double* p) const;
+  // u, v of run r's blocks at t from its coordinates (ends_only: its first and last rows only).
+  void write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only = false);
+  void write_path(const Run& r, double t, double* u, double* v) const;
+  // Bounds that hold at every time after the projection, from each mode's energy at it (which
+  // never grows): order 0, |u - path| of block i; orders 2 to 5, |u^(order)|. Taken for a run's
+  // end rows and sliding blocks (others: +inf).
+  double bound(int i, int order) const { return bound_[order == 0 ? 0 : order - 1][i]; }
+  TransientEnvelope envelope(const Run& r) const { return transient_envelope(*r.shape, q0_.data() + r.lo, p0_.data() + r.lo); }
+  // u of block i about t as a polynomial in tau, c[j] = u^(j)(t) / j!, j = 0 .. deg, from its
+  // run's coordinates q, p at t.
+  void taylor(int i, double t, const double* q, const double* p, int deg, double* c) const;
+
+  long projections = 0;  // diagnostics: projections with modes made so far
+
+ private:
+  double row_dot(int i, const double* x) const {
+    const Run& r = runs_[first_[i]];
+    const int n = r.n();
+    const double* row = r.shape->row(i - r.lo);
+    const double* xs = x + r.lo;
+    double d = 0;
+    for (int k = 0; k < n; ++k) d += row[k] * xs[k];
+    return d;
+  }
+  Run& claim(BlockRange r, Owner owner);
+  void set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir);
+  void set_bounds(const Run& run, const std::int8_t* dir);
+
+  int N_;
+  double gamma_;
+  RunShapes& shapes_;
+  std::int64_t serial_ = 0;
+  std::vector<Run> runs_;               // by first block
+  std::vector<int> first_;              // per block: first block of the run holding it (-1: none)
+  std::vector<double> A_, B_;           // per block: the affine path
+  std::vector<double> q0_, p0_, sE_;    // per slot: modes at t0, sqrt of their energies
+  std::vector<double> bound_[5];        // per block: bound() of orders 0, 2, 3, 4, 5
+  std::vector<double> x_, y_, su_, sv_;  // work arrays
+};
+
+}  // namespace sb::event_detail
