@@ -8,7 +8,7 @@ review so that they stay true. Function extents come from Universal Ctags (its `
 when ctags is missing the function check says so and is skipped (exit 77, CTest's skip code)
 instead of passing silently.
 
-Usage: check_structure.py SOURCE_DIR [--report]   (--report prints the longest functions)
+Usage: python3 -m tools.check_structure SOURCE_DIR [--report]   (--report prints the longest functions)
 """
 import json
 import pathlib
