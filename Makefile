@@ -48,15 +48,16 @@ clean:
 # Builds only the simulator and the reproduction drivers, runs every figure/table target with
 # one line per target and an ETA (full logs under $(BUILD)/logs/), compares with the published
 # numbers, draws the figures and writes the report.
+# The tools run as modules from this directory (python3 -m tools.<name>: tools/__init__.py).
 # The clock starts before configure, so the run record's total is the whole command's.
 # A build tree without a CMake cache is a fresh one: the record says so (the README's cost of a
 # fresh clone), rather than guessing it from how much the build compiled.
 reproduce-all:
 	@t0=$$(date +%s.%N) && fresh=$$(test -f $(BUILD)/CMakeCache.txt || echo --fresh-build) && \
 	  $(MAKE) --no-print-directory configure && \
-	  /usr/bin/python3 tools/reproduce_all.py $(BUILD) --jobs $(JOBS) --started-at $$t0 $$fresh
+	  /usr/bin/python3 -m tools.reproduce_all $(BUILD) --jobs $(JOBS) --started-at $$t0 $$fresh
 
 # The optional studies (expensive, slow to change): run at TIER and commit their documents under
 # paper/data/, which the figures and the report read.
 studies: configure
-	@/usr/bin/python3 tools/reproduce_all.py $(BUILD) --jobs $(JOBS) --studies
+	@/usr/bin/python3 -m tools.reproduce_all $(BUILD) --jobs $(JOBS) --studies

@@ -9,7 +9,7 @@ failed are named in the legend, not dropped. (c): cost of the event method per s
 against the number of blocks N at the paper's block size, log-log, one line per surface with the
 power law fitted by the driver (exponent and its standard error in the legend). Data:
 accuracy_cost.json, blocks `work_precision` and `scaling`."""
-import style
+from figures import style
 
 
 def work_precision_panels(pa, pb, doc, extra):

@@ -1,7 +1,7 @@
 """Shared drawing for fig_p2 and fig_p3: one column per surface, reproduced mu_s / mu_d beside
 the printed value, and under each column the surface's groove profile from the simulator's
 own pattern builder."""
-import style
+from figures import style
 
 
 def draw(args, doc, target, title):

@@ -5,13 +5,13 @@ slip have no mu_d: they are the rug of ticks along the mu_s axis), the verified 
 their fresh mu_s and mu_d +- 1 SEM, the target region, and the paper's published surfaces of
 the same chain (tables/published_tab_pat*.tsv) for orientation.
 
-Usage: figures/design.py RESULT.json --out DIR [--name design_query]"""
+Usage: python3 -m figures.design RESULT.json --out DIR [--name design_query]"""
 import argparse
 import json
 import math
 from pathlib import Path
 
-import style
+from figures import style
 
 
 def finite(x):

@@ -7,7 +7,7 @@ them and rises as the contact fraction falls; mu_d changes only where few blocks
 Data: the optional study `design_map` (`make studies`; committed as paper/data/design_map.json)."""
 import math
 
-import style
+from figures import style
 
 a = style.arguments(__doc__)
 doc = style.load_study(a.data, "design_map")

@@ -2,7 +2,7 @@
 """Fig. 1: total friction force over the load, mu(t), of one smooth-surface run, with the
 number of sliding blocks. mu_s and mu_d extracted by the simulator are drawn as guides so the
 reader can see where on the curve each coefficient comes from."""
-import style
+from figures import style
 
 a = style.arguments(__doc__)
 doc = style.load_target(a.data, "fig1")

@@ -2,7 +2,7 @@
 """Fig. 2: macroscopic mu_d against (mu_d)_m/(mu_s)_m. The K_int = 0 limit (eq. 9 averaged
 over the Gaussian draws, provided by the target in `extra`) is the red curve; simulations are
 split by coupling (k_int_scale) and damping, the three data sets of the paper."""
-import style
+from figures import style
 
 
 def case(s):

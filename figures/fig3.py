@@ -6,7 +6,7 @@ We plot the friction force on each block divided by that block's own normal forc
 paper/choices.md): normalising by the total pressure instead would make every pawl block of a
 sparser surface look more stressed, which contradicts the paper's reading of panel (b).
 The contact profile is the black line under each trace."""
-import style
+from figures import style
 
 
 def panel_of(label, entry, pattern):

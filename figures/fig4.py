@@ -5,7 +5,7 @@ Grouping by contact fraction separates the paper's two competing effects: at fix
 grooves lower mu_s, at fixed groove size a smaller S raises it."""
 from fractions import Fraction
 
-import style
+from figures import style
 
 
 def sizes(pattern, scene=None):

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Fig. 5: mu(t) of a smooth, a one-level and a two-level surface (N=360), one panel each
 with a common time axis, the groove profile drawn under each trace."""
-import style
+from figures import style
 
 a = style.arguments(__doc__)
 doc = style.load_target(a.data, "fig5")

@@ -7,8 +7,8 @@ pawls, N = 2 N_g n_g, so N_g/N = 1/(2 n_g) and n_g,cr = 1/(2 (N_g/N)_cr). Groove
 n_g,cr (N_g/N below the critical ratio) are where the paper expects a reduction of mu_s."""
 import math
 
-import style
-import sweep
+from figures import style
+from figures import sweep
 
 a = style.arguments(__doc__)
 doc = style.load_target(a.data, "fig_p1")

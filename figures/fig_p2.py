@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Fig. P2: mu_s and mu_d when hierarchical levels are added under a fixed first-level groove
 (tpat1 families, N=120), each surface with its groove profile."""
-import categories
-import style
+from figures import categories
+from figures import style
 
 a = style.arguments(__doc__)
 doc = style.load_target(a.data, "fig_p2")

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Fig. P3: one-level against two-level surfaces with the same contact fraction and the same
 largest groove (tpat0 vs tpat2, N=360), each with its groove profile."""
-import categories
-import style
+from figures import categories
+from figures import style
 
 a = style.arguments(__doc__)
 doc = style.load_target(a.data, "fig_p3")

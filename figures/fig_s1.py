@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Fig. S1: smooth surface, mu_s (a) and mu_d (b) against the number of blocks N at fixed
 block length, one line per set of microscopic coefficients (the dispersion is the point)."""
-import style
-import sweep
+from figures import style
+from figures import sweep
 
 a = style.arguments(__doc__)
 doc = style.load_target(a.data, "fig_s1")

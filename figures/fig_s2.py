@@ -2,8 +2,8 @@
 """Fig. S2: mu_s (a) and mu_d (b) against K_int/K_s (varied through l_x), one line per N.
 K_int/K_s is recomputed from the derived stiffnesses when the scene does not give it, so the
 x coordinate always matches what was simulated."""
-import style
-import sweep
+from figures import style
+from figures import sweep
 
 
 def ratio(s):

@@ -5,7 +5,7 @@ One panel per table; the dotted band is the detection threshold +-k. The chosen 
 criterion in the study document) is drawn with filled markers. Below, the fraction of the 142
 z-scores within 1, 2 and 3 for each layout against a standard normal.
 Data: the optional study `layout` (paper/data/layout.json, tools/layout_study.py)."""
-import style
+from figures import style
 
 a = style.arguments(__doc__)
 doc = style.load_study(a.data, "layout")

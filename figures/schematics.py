@@ -10,7 +10,7 @@ the larger, earlier levels."""
 import matplotlib.patches as mp
 import numpy as np
 
-import style
+from figures import style
 
 
 def spring(ax, x0, y0, x1, y1, turns=5, width=0.08, **kw):

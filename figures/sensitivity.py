@@ -3,7 +3,7 @@
 length, integrator accuracy): the shift of each variant from the baseline of its surface.
 The grey band is ± the baseline's standard error: shifts inside it are below the noise of one
 ensemble (variants share the seed, so the real paired noise is smaller still)."""
-import style
+from figures import style
 
 
 def key(s):

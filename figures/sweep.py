@@ -2,7 +2,7 @@
 mu_d in panel (b) against one plot coordinate, one line per group of scenes."""
 import math
 
-import style
+from figures import style
 
 
 def two_panels(title_a="(a)", title_b="(b)", figsize=(7.0, 3.0)):

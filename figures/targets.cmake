@@ -19,11 +19,9 @@ set(SB_FIG_OUT ${CMAKE_BINARY_DIR}/figures)
 set(SB_REPRO_DIR ${CMAKE_BINARY_DIR}/reproduce)
 set(SB_PAPER_OUT ${CMAKE_BINARY_DIR}/paper)
 file(MAKE_DIRECTORY ${SB_FIG_OUT} ${SB_PAPER_OUT})
-if(NOT SPRINGBLOCK_PYTHON)
-  set(SPRINGBLOCK_PYTHON /usr/bin/python3)
-endif()
-# No __pycache__ in the source tree: the scripts import their shared modules from there.
-set(SB_PY ${CMAKE_COMMAND} -E env PYTHONDONTWRITEBYTECODE=1 ${SPRINGBLOCK_PYTHON})
+# The scripts are modules of the packages figures/, tables/, paper/ and tools/ (the top-level
+# CMakeLists.txt says how they run).
+set(SB_PY ${SPRINGBLOCK_PYTHON_TOOLS})
 
 set(SB_FIG_COMMON ${SB_FIG_SRC}/style.py ${SB_FIG_SRC}/sweep.py ${SB_FIG_SRC}/categories.py
                   ${CMAKE_SOURCE_DIR}/tables/published_tab_pat0.tsv ${CMAKE_SOURCE_DIR}/tables/published_tab_pat1.tsv
@@ -73,7 +71,7 @@ foreach(fig ${SB_FIGURES})
   set(png ${SB_FIG_OUT}/${fig}.png)
   add_custom_command(
     OUTPUT ${png} ${SB_FIG_OUT}/${fig}.pdf
-    COMMAND ${SB_PY} ${SB_FIG_SRC}/${fig}.py --data ${SB_REPRO_DIR} --out ${SB_FIG_OUT}
+    COMMAND ${SB_PY} -m figures.${fig} --data ${SB_REPRO_DIR} --out ${SB_FIG_OUT}
             --springblock $<TARGET_FILE:springblock_pattern>
     DEPENDS ${SB_FIG_SRC}/${fig}.py ${SB_FIG_COMMON} ${json_deps} springblock_pattern
     COMMENT "Figure ${fig}"
@@ -87,7 +85,7 @@ add_custom_target(figures DEPENDS ${SB_FIG_PNGS})
 if(TARGET reproduce-summary)
   add_custom_command(
     OUTPUT ${SB_FIG_OUT}/zscores.png ${SB_FIG_OUT}/zscores.pdf
-    COMMAND ${SB_PY} ${SB_FIG_SRC}/zscores.py --data ${SB_REPRO_DIR} --out ${SB_FIG_OUT}
+    COMMAND ${SB_PY} -m figures.zscores --data ${SB_REPRO_DIR} --out ${SB_FIG_OUT}
     DEPENDS ${SB_FIG_SRC}/zscores.py ${SB_FIG_SRC}/style.py ${CMAKE_SOURCE_DIR}/tools/summary_schema.py
             ${SPRINGBLOCK_REPRODUCTION_SUMMARY}
     COMMENT "Figure zscores"
@@ -104,9 +102,9 @@ if(SB_FIG_DATA_TARGETS)
 endif()
 
 add_custom_target(report
-  COMMAND ${SB_PY} ${CMAKE_SOURCE_DIR}/tables/render_tables.py
+  COMMAND ${SB_PY} -m tables.render_tables
           --data ${SB_REPRO_DIR} --out ${SB_PAPER_OUT}/tables
-  COMMAND ${SB_PY} ${CMAKE_SOURCE_DIR}/paper/build_report.py
+  COMMAND ${SB_PY} -m paper.build_report
           --data ${SB_REPRO_DIR} --figures ${SB_FIG_OUT} --out ${SB_PAPER_OUT}
   DEPENDS ${SB_FIG_PNGS} ${CMAKE_SOURCE_DIR}/paper/build_report.py ${CMAKE_SOURCE_DIR}/paper/report_studies.py
           ${CMAKE_SOURCE_DIR}/paper/choices.md

@@ -8,10 +8,8 @@ import sys
 
 from scipy.stats import norm
 
-import style
-
-sys.path.insert(0, str(style.REPO / "tools"))
-import summary_schema as schema  # noqa: E402
+from figures import style
+from tools import summary_schema as schema
 
 a = style.arguments(__doc__)
 try:

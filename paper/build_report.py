@@ -26,16 +26,13 @@ import tempfile
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO / "tables"))
-sys.path.insert(0, str(REPO / "tools"))
-import render_tables  # noqa: E402
-import summary_schema as schema  # noqa: E402
-import target_cost  # noqa: E402  (CPU time by integrator, as the README's Cost section reads it)
-from reproduction.inputs import read_tsv  # noqa: E402  (one reader of the tables)
+from paper import report_studies  # noqa: E402
+from tables import render_tables  # noqa: E402
+from tools import summary_schema as schema  # noqa: E402
+from tools import target_cost  # noqa: E402  (CPU time by integrator, as the README's Cost section reads it)
+from tools.reproduction.inputs import read_tsv  # noqa: E402  (one reader of the tables)
 
-sys.path.insert(0, str(REPO / "paper"))
-import report_studies  # noqa: E402
+REPO = Path(__file__).resolve().parent.parent
 
 # Paper order: the model schematic, section II figures, section III figures, then the tables.
 ORDER = ["schematics", "fig1", "fig_s1", "fig_s2", "fig2", "fig_p1", "fig3", "fig4", "fig5",

@@ -3,13 +3,12 @@ tree if it ran there, else from its committed copy under paper/data/, and shown 
 that made it. Blocks in the shape paper/build_report.py renders."""
 import json
 import math
-import sys
 from pathlib import Path
 
+from tools.reproduction import stats
+from tools.reproduction.inputs import published_rows
+
 REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO / "tools"))
-from reproduction import stats  # noqa: E402
-from reproduction.inputs import published_rows  # noqa: E402
 
 STUDIES = ("layout", "extraction", "method_bias", "rk4_refinement")
 

@@ -16,10 +16,10 @@ from fractions import Fraction
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from tools import summary_schema as schema  # noqa: E402
+from tools.reproduction.inputs import read_tsv  # noqa: E402  (one reader of the tables)
+
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parent / "tools"))
-import summary_schema as schema  # noqa: E402
-from reproduction.inputs import read_tsv  # noqa: E402  (one reader of the tables)
 
 TABLES = ("tab_pat0", "tab_pat1", "tab_pat2")
 CAPTIONS = {

@@ -37,12 +37,12 @@ import os
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from tools import summary_schema as schema  # noqa: E402
+from tools.reproduction import evaluate  # noqa: E402
+from tools.reproduction.exit_codes import claim_exit_code, row_exit_code  # noqa: E402
+from tools.reproduction.rows import row_line  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import summary_schema as schema  # noqa: E402
-from reproduction import evaluate  # noqa: E402
-from reproduction.exit_codes import claim_exit_code, row_exit_code  # noqa: E402
-from reproduction.rows import row_line  # noqa: E402
 
 
 def print_claim(rec, statement):

@@ -10,7 +10,7 @@ Both runs use the same seeds, so their repetitions share micro coefficients and 
 smaller than for independent runs: |dz| <= 3 for every number is the criterion stated before
 looking (issue 19's "equal within 3 combined standard errors"); a larger one is a real change.
 
-Usage: compare_summaries.py A/summary.tsv B/summary.tsv [--json OUT]
+Usage: python3 -m tools.compare_summaries A/summary.tsv B/summary.tsv [--json OUT]
 Exit status 1 if some |dz| > 3 or a row is missing from either side.
 """
 import csv

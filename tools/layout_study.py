@@ -18,7 +18,7 @@ chains: fig1, fig_s1, fig_s2, fig2) are the build's own. Every variant is judged
 <build>/reproduce/layout/layout.json; `make studies` copies it to paper/data/ (committed: the
 report and figures/layout.py read it).
 
-Usage: layout_study.py BUILD_DIR [--variants a+b,c,...] [--out FILE]
+Usage: python3 -m tools.layout_study BUILD_DIR [--variants a+b,c,...] [--out FILE]
 """
 import argparse
 import json
@@ -29,11 +29,11 @@ import tempfile
 import time
 from fractions import Fraction
 
+from tools.build_cache import cache_value
+from tools.reproduction import evaluate
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-from build_cache import cache_value  # noqa: E402
-from reproduction import evaluate  # noqa: E402
 
 CRITERION = ("admissible if every printed S/S_tot that is a count (the 15 rows of tpat1) is reproduced; "
              "among those, the most published numbers with |z| <= k; then the smallest sum of z^2 over "

@@ -8,7 +8,7 @@ one progress line with an ETA over the whole job. Everything the tools print goe
 
 The ETA weights the targets by their wall time in the previous run of the same tier
 (<build>/reproduce/timings.json) and follows each target's own progress (its "NN.N%" lines).
-Usage: reproduce_all.py BUILD_DIR [--jobs N] [--studies]
+Usage: python3 -m tools.reproduce_all BUILD_DIR [--jobs N] [--studies]
 """
 import argparse
 import json
@@ -19,11 +19,11 @@ import subprocess
 import sys
 import time
 
+from tools import reproduction_counts  # verdict counts per target, from the checker
+from tools.build_cache import cache_value
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-import reproduction_counts  # noqa: E402  (verdict counts per target, from the checker)
-from build_cache import cache_value  # noqa: E402
 
 PERCENT = re.compile(rb"(\d+(?:\.\d+)?)%")
 START = re.compile(rb"Reproducing (\S+) \(tier")  # the COMMENT of each target's custom command

@@ -6,12 +6,9 @@ judged with the checker's own rules (tools/reproduction), and the ones that belo
 target are counted; at the end, the counts of the written summary.json.
 """
 import os
-import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import summary_schema as schema  # noqa: E402
-from reproduction import evaluate  # noqa: E402
+from tools import summary_schema as schema
+from tools.reproduction import evaluate
 
 
 class Counter:

@@ -180,7 +180,7 @@ int run_sweep(const SweepOptions& o, const std::string& command_line) {
   } catch (const InputError&) {
     if (lead) throw;
     // Rank 0 found the same, says so and exits with kBadInput, which mpirun then returns. A
-    // worker that exited non-zero first made mpirun abort the job, at times before rank 0 had
+    // worker exiting non-zero first would make mpirun abort the job, at times before rank 0 has
     // printed a word (seen under load in cli_sweep_mpi): it leaves quietly instead.
     return 0;
   }

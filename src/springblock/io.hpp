@@ -30,7 +30,7 @@ std::string not_measured(const Scene& scene, const EnsembleResult& result, const
 // Provenance: program version, commit, command line, UTC time, host threads.
 nlohmann::json provenance(const std::string& command_line);
 
-// The full results object of an ensemble: the schema (mu_s, mu_d with mean/std/sem,
+// The full results object of an ensemble: the results schema (mu_s, mu_d with mean/std/sem,
 // reps, seed, contact_fraction, method, dt, duration, wall_seconds) plus the scene, derived
 // parameters, per-repetition values and provenance.
 nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& result,

@@ -11,8 +11,8 @@ std::string method_name(Method m);
 Method parse_method(const std::string& text);  // throws InputError("method")
 
 // How the event method moves the runs that something slides in: by their exact modes, or by
-// Dormand-Prince 5(4) steps under the tolerance (the stepper before the exact one, kept as a
-// reference).
+// Dormand-Prince 5(4) steps under the tolerance (a reference for the exact stepper, and its
+// fallback on runs longer than exact_max_run).
 enum class Stepper { Exact, Dopri5 };
 
 // The event method's defaults, shared by RunControl and EventDriven: the longest mobile run and
@@ -59,13 +59,13 @@ struct RunControl {
   // event method: ringing groove-only runs (no contact block, so no stop to search for; only
   // their stuck neighbours' crossings) of up to this many blocks are propagated by their modes
   // too. Separate from modal_max_run because a groove run has no stop events: it pays off up to
-  // much longer runs (bench_methods, modal_groove/*): 64, the longest allowed, since
-  // 2026-11-26 (32 before; paper/choices.md).
+  // much longer runs (bench_methods, modal_groove/*): 64, the longest allowed (paper/choices.md,
+  // Integration).
   int modal_max_groove = kDefaultModalMaxGroove;
   // event method: the stepped runs move by their modes (Stepper::Exact) while none is longer than
   // exact_max_run blocks, and by Dormand-Prince steps otherwise (a run's projection costs O(n^2)
-  // at each switch); Stepper::Dopri5 always steps them. See paper/choices.md (Integration): 128
-  // since 2026-11-26 (64 before), by paired wall time over the criterion's four scenes.
+  // at each switch); Stepper::Dopri5 always steps them. The default, 128, is the fastest over
+  // the criterion's four scenes (paper/choices.md, Integration).
   Stepper stepper = Stepper::Exact;
   int exact_max_run = kDefaultExactMaxRun;
   // Run length in units of t0 = (mu_s)_m F_n / (K_s v), the time the slider needs to load an

@@ -9,7 +9,7 @@ appears, and wherever it appears its verdict and its comparison lines equal the 
 claims overview, the tier-resolution table and the z-score numbers equal the summary's; no
 placeholder ('?', None, nan, unchecked) appears anywhere.
 
-Usage: test_report.py --data DIR (DIR/summary.json and the target documents; CTest: the
+Usage: PYTHONPATH=<repository root> test_report.py --data DIR (DIR/summary.json and the target documents; CTest: the
 configured tier's build/reproduce)."""
 import argparse
 import json
@@ -20,9 +20,7 @@ import sys
 import tempfile
 
 sys.dont_write_bytecode = True
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "tools"))
-import summary_schema as schema  # noqa: E402
+from tools import summary_schema as schema  # noqa: E402
 
 FAILURES = []
 
@@ -231,7 +229,7 @@ def main():
     a = ap.parse_args()
     s = schema.load(os.path.join(a.data, "summary.json"))
     with tempfile.TemporaryDirectory() as tmp:
-        p = subprocess.run([sys.executable, os.path.join(REPO, "paper", "build_report.py"), "--data", a.data,
+        p = subprocess.run([sys.executable, "-m", "paper.build_report", "--data", a.data,
                             "--figures", os.path.join(tmp, "figures"), "--out", tmp], capture_output=True, text=True)
         if p.returncode != 0:
             print(p.stdout + p.stderr)

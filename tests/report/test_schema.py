@@ -13,11 +13,11 @@ import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
+from tools import summary_schema as schema  # noqa: E402
+from tools.reproduction import evaluate  # noqa: E402
+from tools.reproduction.inputs import read_tsv  # noqa: E402
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "tools"))
-import summary_schema as schema  # noqa: E402
-from reproduction import evaluate  # noqa: E402
-from reproduction.inputs import read_tsv  # noqa: E402
 
 TABLES = os.path.join(REPO, "tables")
 PY = sys.executable
@@ -114,9 +114,9 @@ class Schema(unittest.TestCase):
             json.dump({k: v for k, v in self.summary.items() if k != "claims"}, f)
         out = os.path.join(self.tmp.name, "out")
         env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
-        for cmd in ([PY, os.path.join(REPO, "paper", "build_report.py"), "--data", bad, "--figures", out, "--out", out],
-                    [PY, os.path.join(REPO, "tables", "render_tables.py"), "--data", bad, "--out", out],
-                    [PY, os.path.join(REPO, "tools", "readme_results.py"), "--check",
+        for cmd in ([PY, "-m", "paper.build_report", "--data", bad, "--figures", out, "--out", out],
+                    [PY, "-m", "tables.render_tables", "--data", bad, "--out", out],
+                    [PY, "-m", "tools.readme_results", "--check",
                      "--summary", os.path.join(bad, "summary.json")]):
             p = subprocess.run(cmd, capture_output=True, text=True, env=env)
             self.assertNotEqual(p.returncode, 0, cmd)
@@ -128,7 +128,7 @@ class Schema(unittest.TestCase):
         s = copy.deepcopy(self.summary)
         s["tier"] = "quick"
         schema.write(path, s)
-        p = subprocess.run([PY, os.path.join(REPO, "tools", "readme_results.py"), "--check", "--summary", path],
+        p = subprocess.run([PY, "-m", "tools.readme_results", "--check", "--summary", path],
                            capture_output=True, text=True, env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
         self.assertEqual(p.returncode, 77, p.stdout + p.stderr)
 

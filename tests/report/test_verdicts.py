@@ -13,14 +13,14 @@ import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "tools"))
 from scipy.stats import norm, t as student_t  # noqa: E402
 
-from reproduction import evaluate, exit_codes, stats  # noqa: E402
-from reproduction.inputs import KnownDeviations, Results, published_rows  # noqa: E402
-from reproduction.lines import Claim, claim_verdict  # noqa: E402
-from reproduction.rows import check_row  # noqa: E402
+from tools.reproduction import evaluate, exit_codes, stats  # noqa: E402
+from tools.reproduction.inputs import KnownDeviations, Results, published_rows  # noqa: E402
+from tools.reproduction.lines import Claim, claim_verdict  # noqa: E402
+from tools.reproduction.rows import check_row  # noqa: E402
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 EPS = 1e-9
 TABLES = os.path.join(REPO, "tables")

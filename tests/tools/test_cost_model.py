@@ -11,10 +11,7 @@ import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-TOOL = os.path.join(REPO, "tools", "cost_model.py")
-sys.path.insert(0, os.path.join(REPO, "tools"))
-import cost_model as cm  # noqa: E402
+from tools import cost_model as cm  # noqa: E402
 
 # Seconds per unit, the costs the synthetic times are made of.
 TRUE = {"slip_events": 80e-6, "slip_starts": 6e-6, "samples": 1.5e-6}
@@ -88,7 +85,8 @@ class Render(unittest.TestCase):
         self.dir.cleanup()
 
     def tool(self, *args):
-        return subprocess.run([sys.executable, TOOL, *args], capture_output=True, text=True,
+        # The tool as its callers run it, with this test's environment (PYTHONPATH: the root).
+        return subprocess.run([sys.executable, "-m", "tools.cost_model", *args], capture_output=True, text=True,
                               env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
 
     def test_from_prints_the_block_and_writes_the_readme(self):

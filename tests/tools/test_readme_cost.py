@@ -11,10 +11,8 @@ import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "tools"))
-import readme_cost as rc  # noqa: E402
-import summarize  # noqa: E402  (bench/, put on the path by readme_cost)
+from bench import summarize  # noqa: E402
+from tools import readme_cost as rc  # noqa: E402
 
 
 def record(total, targets, commit="abc1234", tier="paper", units=25, fresh=True):

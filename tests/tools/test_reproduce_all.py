@@ -13,9 +13,7 @@ import time
 import unittest
 
 sys.dont_write_bytecode = True
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "tools"))
-import reproduce_all as ra  # noqa: E402
+from tools import reproduce_all as ra  # noqa: E402
 
 
 def touch(path, t):

@@ -2,7 +2,7 @@
 the shape tools/summary_schema.py defines (the only place that shape is written down)."""
 import os
 
-import summary_schema as schema
+from tools import summary_schema as schema
 
 from . import stats
 from .claims import REGISTRY, View, parse_params, targets_of

@@ -7,7 +7,7 @@
 // contact blocks, the sums of s_i a_i and s_i b_i with s_i the sign of f_i(t_first), the sums of
 // a_i and b_i, the number sliding, and the earliest time at which some f_i changes sign. Summed
 // afresh that is O(contact blocks) per stretch, and a stretch ends at every event of any block:
-// in fig2's K_int = 0 chains it was 39 % of the run. Here the blocks are the leaves of a binary
+// in fig2's K_int = 0 chains that sum is 39 % of the run (paper/choices.md). Here the blocks are the leaves of a binary
 // tree whose nodes hold their subtree's totals; an event changes one leaf and the nodes above it
 // (O(log N)). A leaf's sign is taken when it is set and taken again, by the same expression,
 // whenever the stretch starts at or after the time its force was due to change sign.

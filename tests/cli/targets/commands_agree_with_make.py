@@ -4,17 +4,15 @@ whether each is up to date; the build tool must agree, or `make test` would run 
 that reproduce-all left alone (or trust one it should rerun). For every target: the manifest's
 verdict (tools/reproduce_all.py up_to_date) against a dry run of its custom target, which prints
 the "Reproducing <name>" comment only if make would run it. Exit 77 (skip) for a generator other
-than Makefiles, which has no dry run here. Usage: commands_agree_with_make.py BUILD_DIR"""
+than Makefiles, which has no dry run here. Usage: PYTHONPATH=<repository root> commands_agree_with_make.py BUILD_DIR"""
 import json
 import os
 import subprocess
 import sys
 
 sys.dont_write_bytecode = True
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-sys.path.insert(0, os.path.join(REPO, "tools"))
-import reproduce_all as ra  # noqa: E402
-from build_cache import cache_value  # noqa: E402
+from tools import reproduce_all as ra  # noqa: E402
+from tools.build_cache import cache_value  # noqa: E402
 
 
 def main():
