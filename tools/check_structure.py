@@ -14,7 +14,10 @@ site.addsitedir): the project's Python is packages run as modules from the repos
 (tools/__init__.py), and a path edit would let a module import a sibling in a way its other
 callers cannot. And src/ says why the code is as it is, not its history: an issue number
 ("issue 16") or a date (2026-11-26) in a C++ comment, or anywhere in src/'s Markdown and CMake
-files, belongs in git and paper/choices.md (HISTORY_CHECK_EXCLUDED: what is not checked yet).
+files, belongs in git and paper/choices.md.
+
+Inside integrate/ the folders form layers (src/springblock/README.md): no folder includes one that
+includes it, directly or through others (a file at integrate/'s top is a node of its own).
 
 Usage: python3 -m tools.check_structure SOURCE_DIR [--report]   (--report prints the longest functions)
 """
@@ -35,9 +38,6 @@ INCLUDE_RE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 # History in src/: C++ comments, and the Markdown and CMake files (prose and comments throughout).
 HISTORY_RE = re.compile(r"\bissues?\s+#?\d+|\b20\d\d-\d\d-\d\d\b", re.I)
 CXX_SUFFIXES = (".cpp", ".hpp", ".h", ".cc", ".cxx")
-# Skipped by the history check for now: integrate/ is being restructured on another branch. Empty
-# this list once that folder's comments carry no issue numbers or dates.
-HISTORY_CHECK_EXCLUDED = ["src/springblock/integrate/"]
 # Methods of a list that change it, called on sys.path.
 LIST_EDITS = {"insert", "append", "extend", "remove", "pop", "clear", "__setitem__", "__iadd__"}
 
@@ -204,12 +204,11 @@ def cxx_comments(text):
 
 
 def history_in_src(root):
-    """file:line of every issue number or date in src/'s C++ comments, Markdown and CMake files,
-    outside HISTORY_CHECK_EXCLUDED."""
+    """file:line of every issue number or date in src/'s C++ comments, Markdown and CMake files."""
     bad = []
     for p in sorted((root / "src").rglob("*")):
         rel = p.relative_to(root).as_posix()
-        if not p.is_file() or any(rel.startswith(x) for x in HISTORY_CHECK_EXCLUDED):
+        if not p.is_file():
             continue
         if p.suffix in CXX_SUFFIXES:
             lines = cxx_comments(p.read_text())
@@ -224,10 +223,42 @@ def history_in_src(root):
     return bad
 
 
+def integrate_folder_cycles(root):
+    """Cycles in the graph folder -> folder it includes from, among integrate/'s folders."""
+    prefix = "springblock/integrate/"
+
+    def node(rel):  # a path under src/: its folder below integrate/, or the top-level file itself
+        parts = rel[len(prefix):].split("/")
+        return parts[0] + "/" if len(parts) > 1 else parts[0]
+
+    graph = {}
+    for p in cxx_files(root, "src/springblock/integrate"):
+        a = node(p.relative_to(root / "src").as_posix())
+        for inc in INCLUDE_RE.findall(p.read_text()):
+            if inc.startswith(prefix) and node(inc) != a:
+                graph.setdefault(a, set()).add(node(inc))
+    cycles, state = [], {}
+
+    def visit(n, path):
+        state[n] = 1
+        for m in sorted(graph.get(n, ())):
+            if state.get(m) == 1:
+                cycles.append(" -> ".join(path[path.index(m):] + [m]))
+            elif m not in state:
+                visit(m, path + [m])
+        state[n] = 2
+
+    for n in sorted(graph):
+        if n not in state:
+            visit(n, [n])
+    return cycles
+
+
 def main():
     root = pathlib.Path(sys.argv[1]).resolve()
     failures = long_files(root)
     failures += [f"include cycle: {c}" for c in include_cycles(root)]
+    failures += [f"integrate/ folder cycle: {c}" for c in integrate_folder_cycles(root)]
     failures += sys_path_edits(root)
     failures += history_in_src(root)
     rows = function_lengths(root)
@@ -244,9 +275,9 @@ def main():
     if rows is None:
         print("structure: ctags not found, function lengths not checked (install universal-ctags)")
         return 77
-    print("structure: integrate/ files <= %d lines, functions <= %d lines, no include cycle, no sys.path "
-          "edit, no issue number or date in src/'s comments (skipped: %s)"
-          % (MAX_INTEGRATE_FILE_LINES, MAX_FUNCTION_LINES, ", ".join(HISTORY_CHECK_EXCLUDED) or "none"))
+    print("structure: integrate/ files <= %d lines, functions <= %d lines, no include cycle, no folder cycle in "
+          "integrate/, no sys.path edit, no issue number or date in src/'s comments"
+          % (MAX_INTEGRATE_FILE_LINES, MAX_FUNCTION_LINES))
     return 0
 
 
