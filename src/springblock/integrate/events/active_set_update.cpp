@@ -60,7 +60,15 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
   find_runs(c, s, region.lo, region.hi, found_);
   // classify() reads the previous kinds, so every new kind is decided before any is written.
   for (Run& r : found_) r.kind = classify(r, s, touched);
-  for (auto it = first; it != last; ++it) drop_old(*it);
+  // A settled run found again as the same settled run keeps its record: its ends have been stuck
+  // since it was made (a switch of one would have merged it into a larger run), so its path is
+  // still the one recorded. Every other old run lets its record go.
+  for (auto it = first; it != last; ++it) {
+    const auto again = std::lower_bound(found_.begin(), found_.end(), it->span.lo, by_start);
+    const bool kept = it->kind == kSettled && again != found_.end() && again->span.lo == it->span.lo &&
+                      again->span.hi == it->span.hi && again->kind == kSettled;
+    if (!kept) drop_old(*it);
+  }
   std::fill(kind_.begin() + region.lo, kind_.begin() + region.hi, kStuck);
   for (Run& r : found_) assign(c, s, r, r.kind);
   const auto at = runs_.erase(first, last);

@@ -49,9 +49,10 @@ inline TransientEnvelope transient_envelope(const RunShape& b, const double* q0,
   return e;
 }
 
-// Each mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it, whatever its
-// strength), so |q_k| <= sqrt(p0^2 + omega^2 q0^2) / omega at every time after the start, and row
-// r of the run deviates from its affine path by at most sum_k |Q_rk| times that.
+// Each mode's energy E = qd^2 + omega^2 q^2 never grows (damping only removes it, whatever its
+// strength), so |q_k| <= sqrt(E_k) / omega_k at every time after the start, and row r of the run
+// deviates from its affine path by at most sum_k |Q_rk| times that. From the modes (q0, p0), or
+// from sqrt(E_k) per mode (sE).
 inline double row_deviation_bound(const RunShape& b, int row, const double* q0, const double* p0) {
   double a = 0;
   const double* Q = b.row(row);
@@ -61,9 +62,15 @@ inline double row_deviation_bound(const RunShape& b, int row, const double* q0, 
   }
   return a;
 }
+inline double row_deviation_bound(const RunShape& b, int row, const double* sE) {
+  double a = 0;
+  const double* Q = b.row(row);
+  for (int k = 0; k < b.n; ++k) a += std::fabs(Q[k]) * sE[k] * b.inv_omega[k];
+  return a;
+}
 
 // The same energies bound the row's derivatives: |q^(j)| <= c_j sqrt(E) (RunShape::c), so
-// |u^(j)| <= sum_k |Q_rk| c_jk sqrt(E_k), j = 2 .. 5 into b[0 .. 3]. sE: sqrt(E_k) per mode.
+// |u^(j)| <= sum_k |Q_rk| c_jk sqrt(E_k), j = 2 .. 5 into out[0 .. 3].
 inline void row_derivative_bounds(const RunShape& b, int row, const double* sE, double out[4]) {
   double d[4] = {0, 0, 0, 0};
   const double* Q = b.row(row);

@@ -28,7 +28,7 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
     int j = i;
     while (j + 1 < N && !c.contact[j + 1]) ++j;
     const int n = j - i + 1;
-    segs_.push_back(GrooveRun{i, n, &store.shapes().of({i, j + 1}), i > 0, j + 1 < N});
+    segs_.push_back(GrooveRun{i, n, &store.shapes().of({i, j + 1}, RunShape::kSample), i > 0, j + 1 < N});
     i = j + 1;
   }
 

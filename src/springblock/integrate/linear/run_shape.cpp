@@ -112,10 +112,16 @@ RunShapes::RunShapes(const Chain& c)
     : N_(c.N), K_s_(c.K_s), K_int_(c.K_int), m_(c.m), gamma_(c.gamma), v_(c.v_slider), step_(step_for(c)),
       march_step_(EdgeMarch::grid_step(c.omega_max())) {}
 
-const RunShape& RunShapes::get(int n, bool left, bool right) {
+const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts) {
   const std::size_t slot = 4 * static_cast<std::size_t>(n) + 2 * left + right;
   if (slot >= index_.size()) index_.resize(slot + 1, nullptr);
-  if (index_[slot] != nullptr) return *index_[slot];
+  if (index_[slot] == nullptr) index_[slot] = &shapes_.emplace(std::make_tuple(n, left, right), make(n, left, right)).first->second;
+  RunShape& sh = *index_[slot];
+  if ((sh.parts & parts) != parts) add_parts(sh, parts);
+  return sh;
+}
+
+RunShape RunShapes::make(int n, bool left, bool right) const {
   RunShape sh;
   sh.n = n, sh.left = left, sh.right = right;
   for (int k = 0; k < n; ++k) sh.diag.push_back(K_s_ + ((k > 0 || left) ? K_int_ : 0.0) + ((k + 1 < n || right) ? K_int_ : 0.0));
@@ -129,9 +135,9 @@ const RunShape& RunShapes::get(int n, bool left, bool right) {
   sh.solve(sh.a0.data(), sh.a0.data());
   if (left) sh.gL[0] = K_int_, sh.solve(sh.gL.data(), sh.gL.data());
   if (right) sh.gR[n - 1] = K_int_, sh.solve(sh.gR.data(), sh.gR.data());
-  // The modes, their transitions and the constants of the derivative bounds: from
-  // q'' = -gamma q' - omega^2 q and omega |q| <= sqrt(E), |q''| <= (gamma + omega) sqrt(E) and
-  // q^(j+2) = -gamma q^(j+1) - omega^2 q^(j) for the higher ones.
+  // The modes and the constants of the derivative bounds: from q'' = -gamma q' - omega^2 q and
+  // omega |q| <= sqrt(E), |q''| <= (gamma + omega) sqrt(E) and q^(j+2) = -gamma q^(j+1) -
+  // omega^2 q^(j) for the higher ones.
   cached_modes(K_s_, K_int_, n, left, right, sh.Q, sh.lambda);
   sh.Qr.resize(static_cast<std::size_t>(n) * n);
   for (int r = 0; r < n; ++r)
@@ -140,16 +146,28 @@ const RunShape& RunShapes::get(int n, bool left, bool right) {
     const DampedMode m(0.5 * gamma_, sh.lambda[k] / m_);
     sh.modes.push_back(m);
     sh.w2.push_back(m.omega2);
-    const Transition P = m.transition(step_);
-    sh.p00.push_back(P[0]), sh.p01.push_back(P[1]), sh.p10.push_back(P[2]), sh.p11.push_back(P[3]);
-    sh.march.push_back(m.transition(march_step_));
+    sh.inv_omega.push_back(1.0 / m.omega);
     const double c2 = gamma_ + m.omega, c3 = gamma_ * c2 + m.omega2;
     const double c4 = gamma_ * c3 + m.omega2 * c2, c5 = gamma_ * c4 + m.omega2 * c3;
     sh.c[0].push_back(c2), sh.c[1].push_back(c3), sh.c[2].push_back(c4), sh.c[3].push_back(c5);
   }
-  if (sample_dt_ > 0) set_sample_transitions(sh);
-  index_[slot] = &shapes_.emplace(std::make_tuple(n, left, right), std::move(sh)).first->second;
-  return *index_[slot];
+  return sh;
+}
+
+// Each transition costs two mode evaluations (an exp and a sincos), so a shape makes only those
+// its users ask for: the exact stepper's runs the grid step's, the modal runs EdgeMarch's and
+// the sample spacing's, the quiet phase's segments the sample spacing's.
+void RunShapes::add_parts(RunShape& sh, std::uint8_t parts) const {
+  const std::uint8_t missing = parts & ~sh.parts;
+  for (const DampedMode& m : sh.modes) {
+    if (missing & RunShape::kStep) {
+      const Transition P = m.transition(step_);
+      sh.p00.push_back(P[0]), sh.p01.push_back(P[1]), sh.p10.push_back(P[2]), sh.p11.push_back(P[3]);
+    }
+    if (missing & RunShape::kMarch) sh.march.push_back(m.transition(march_step_));
+  }
+  sh.parts |= missing;
+  if ((missing & RunShape::kSample) && sample_dt_ > 0) set_sample_transitions(sh);
 }
 
 void RunShapes::set_sample_transitions(RunShape& sh) const {
@@ -167,7 +185,8 @@ void RunShapes::set_sample_transitions(RunShape& sh) const {
 
 void RunShapes::set_sample_dt(double dt) {
   sample_dt_ = dt;
-  for (auto& [key, sh] : shapes_) set_sample_transitions(sh);
+  for (auto& [key, sh] : shapes_)
+    if (sh.parts & RunShape::kSample) set_sample_transitions(sh);
 }
 
 }  // namespace sb::event_detail

@@ -15,13 +15,14 @@
 //   * the modes: K's orthonormal eigenvectors Q (by column, and by row in Qr: a block's row is
 //     contiguous) and each mode's damped oscillator (damped_mode.hpp);
 //   * each mode's exact transition over the steps the users take (the sample spacing, the exact
-//     stepper's grid step, EdgeMarch's grid step), and the constants of the bounds on a row's
-//     derivatives.
+//     stepper's grid step, EdgeMarch's grid step), made when a user first asks for them (Parts),
+//     and the constants of the bounds on a row's derivatives.
 // On a chain of identical blocks K depends only on (n, left held, right held) and its modes are
 // sampled sines and cosines (run_shape.cpp), so the shapes are keyed by that triple. A chain of
 // blocks that differ keys them by the run's blocks instead and diagonalises K itself: that is
 // the general case, and these closed forms its fast special case.
 #include <array>
+#include <cstdint>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -35,7 +36,10 @@
 namespace sb::event_detail {
 
 struct RunShape {
+  // The transitions a shape carries once a user has asked for them.
+  enum Parts : std::uint8_t { kStep = 1, kMarch = 2, kSample = 4 };
   int n = 0;
+  std::uint8_t parts = 0;  // those made so far
   bool left = false, right = false;  // held by a stuck block at that end (else a free chain end)
   std::vector<double> diag, off;     // K: diagonal, and the n - 1 entries beside it
   std::vector<double> inv_pivot, upper;  // K's elimination: 1 / pivot_r, and -off_r / pivot_r
@@ -45,6 +49,7 @@ struct RunShape {
   std::vector<double> lambda;            // eigenvalues of K (stiffnesses of the modes)
   std::vector<DampedMode> modes;         // alpha = gamma / 2, omega^2 = lambda / m
   std::vector<double> w2;                // omega^2 per mode, contiguous
+  std::vector<double> inv_omega;         // 1 / omega per mode
   // Per mode, bounds on |q^(j)| per sqrt of its energy q'^2 + omega^2 q^2, j = 2 .. 5 (c[j - 2]).
   std::vector<double> c[4];
   // Per mode: the transition over the sample spacing, and the first row of (I - P)^-1 for the
@@ -89,9 +94,10 @@ class RunShapes {
  public:
   // Transitions over the exact stepper's step (step_for) and EdgeMarch's grid step.
   explicit RunShapes(const Chain& c);
-  // The shape of run r of the chain. References stay valid for the life of this object.
-  const RunShape& of(BlockRange r) { return get(r.size(), r.lo > 0, r.hi < N_); }
-  const RunShape& get(int n, bool left, bool right);
+  // The shape of run r of the chain, with the transitions `parts` (RunShape::Parts) made.
+  // References stay valid for the life of this object.
+  const RunShape& of(BlockRange r, std::uint8_t parts = 0) { return get(r.size(), r.lo > 0, r.hi < N_, parts); }
+  const RunShape& get(int n, bool left, bool right, std::uint8_t parts = 0);
   // Sample transitions of every shape, present and future.
   void set_sample_dt(double dt);
   double sample_dt() const { return sample_dt_; }
@@ -102,11 +108,13 @@ class RunShapes {
   static double step_for(const Chain& c);
 
  private:
+  RunShape make(int n, bool left, bool right) const;
+  void add_parts(RunShape& sh, std::uint8_t parts) const;
   void set_sample_transitions(RunShape& sh) const;
   int N_;
   double K_s_, K_int_, m_, gamma_, v_, step_, march_step_, sample_dt_ = 0;
   std::map<std::tuple<int, bool, bool>, RunShape> shapes_;
-  std::vector<const RunShape*> index_;  // shapes_ by 4 n + 2 left + right: every projection looks one up
+  std::vector<RunShape*> index_;  // shapes_ by 4 n + 2 left + right: every projection looks one up
 };
 
 }  // namespace sb::event_detail

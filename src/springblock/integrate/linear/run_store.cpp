@@ -39,6 +39,10 @@ SB_KERNEL_CLONES void columns_times(int n, const double* __restrict Q, const dou
   }
 }
 
+// Runs this short are written row by row (row_dot): the same doubles as columns_times, without
+// its set-up, which costs more than the products on a run of a few blocks.
+constexpr int kRowWise = 8;
+
 }  // namespace
 
 RunStore::RunStore(const Chain& c, RunShapes& shapes)
@@ -59,12 +63,23 @@ RunStore::RunStore(const Chain& c, RunShapes& shapes)
   for (auto& b : bound_) b.assign(c.N, std::numeric_limits<double>::infinity());
 }
 
+// What each owner moves its runs by: the exact stepper by its grid step, a modal run by
+// EdgeMarch's and by the sample spacing, a quiet phase's segment by the sample spacing.
+std::uint8_t parts_for(RunStore::Owner owner) {
+  switch (owner) {
+    case RunStore::kSpan: return RunShape::kStep;
+    case RunStore::kModal: return RunShape::kMarch | RunShape::kSample;
+    case RunStore::kQuiet: return RunShape::kSample;
+    default: return 0;
+  }
+}
+
 RunStore::Run& RunStore::claim(BlockRange r, Owner owner) {
   for (int i = r.lo; i < r.hi; ++i)
     if (first_[i] >= 0) drop(first_[i]);
   std::fill(first_.begin() + r.lo, first_.begin() + r.hi, r.lo);
   Run& run = runs_[r.lo];
-  run = Run{r.lo, r.hi, &shapes_.of(r), 0.0, false, owner, ++serial_};
+  run = Run{r.lo, r.hi, &shapes_.of(r, parts_for(owner)), 0.0, false, owner, ++serial_};
   return run;
 }
 
@@ -125,15 +140,18 @@ const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, c
   return run;
 }
 
+// The bounds each owner reads: the exact stepper's screen those on the derivatives of its end
+// rows and sliding blocks, a modal run's neighbours the deviation of its end rows.
 void RunStore::set_bounds(const Run& run, const std::int8_t* dir) {
   const int n = run.n();
+  if (run.owner == kModal) {
+    for (int row : {0, n - 1}) bound_[0][run.lo + row] = row_deviation_bound(*run.shape, row, sE_.data() + run.lo);
+    return;
+  }
+  if (run.owner != kSpan) return;
   for (int row = 0; row < n; ++row) {
     const int i = run.lo + row;
-    if (row != 0 && row != n - 1 && dir[i] == 0) {
-      for (auto& b : bound_) b[i] = std::numeric_limits<double>::infinity();
-      continue;
-    }
-    bound_[0][i] = row_deviation_bound(*run.shape, row, q0_.data() + run.lo, p0_.data() + run.lo);
+    if (row != 0 && row != n - 1 && dir[i] == 0) continue;
     double d[4];
     row_derivative_bounds(*run.shape, row, sE_.data() + run.lo, d);
     for (int j = 0; j < 4; ++j) bound_[j + 1][i] = d[j];
@@ -185,17 +203,31 @@ double RunStore::row_a(int i, const double* q, const double* p) const {
   return d;
 }
 
-void RunStore::write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only) {
-  const int n = r.n();
+void RunStore::write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only,
+                     const double* du, const double* dv) {
+  const int n = r.n(), lo = r.lo;
+  const RunShape& sh = *r.shape;
+  // Row k's modal parts into (x, y): by the row itself on short runs (row_dot's sums), from
+  // columns_times on long ones (the same doubles).
+  auto put = [&](int k, double x, double y) {
+    const int i = lo + k;
+    u[i] = path_u(i, t) + x;
+    v[i] = B_[i] + y;
+    if (du != nullptr) u[i] += du[i], v[i] += dv[i];
+  };
+  auto by_row = [&](int k) {
+    const double* row = sh.row(k);
+    double x = 0, y = 0;
+    for (int j = 0; j < n; ++j) x += row[j] * q[lo + j], y += row[j] * p[lo + j];
+    put(k, x, y);
+  };
   if (ends_only && n > 2) {
-    for (int i : {r.lo, r.hi - 1}) u[i] = row_u(i, t, q), v[i] = row_v(i, p);
-    return;
-  }
-  columns_times(n, r.shape->Q.data(), q + r.lo, p + r.lo, su_.data(), sv_.data());
-  for (int k = 0; k < n; ++k) {
-    const int i = r.lo + k;
-    u[i] = path_u(i, t) + su_[k];
-    v[i] = B_[i] + sv_[k];
+    by_row(0), by_row(n - 1);
+  } else if (n <= kRowWise) {
+    for (int k = 0; k < n; ++k) by_row(k);
+  } else {
+    columns_times(n, sh.Q.data(), q + lo, p + lo, su_.data(), sv_.data());
+    for (int k = 0; k < n; ++k) put(k, su_[k], sv_[k]);
   }
 }
 

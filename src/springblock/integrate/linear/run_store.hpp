@@ -79,12 +79,15 @@ class RunStore {
   double row_u(int i, double t, const double* q) const { return path_u(i, t) + row_dot(i, q); }
   double row_v(int i, const double* p) const { return B_[i] + row_dot(i, p); }
   double row_a(int i, const double* q, const double* p) const;
-  // u, v of run r's blocks at t from its coordinates (ends_only: its first and last rows only).
-  void write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only = false);
+  // u, v of run r's blocks at t from its coordinates (ends_only: its first and last rows only),
+  // plus per-block offsets du, dv where given.
+  void write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only = false,
+             const double* du = nullptr, const double* dv = nullptr);
   void write_path(const Run& r, double t, double* u, double* v) const;
   // Bounds that hold at every time after the projection, from each mode's energy at it (which
-  // never grows): order 0, |u - path| of block i; orders 2 to 5, |u^(order)|. Taken for a run's
-  // end rows and sliding blocks (others: +inf).
+  // never grows): order 0, |u - path| of block i; orders 2 to 5, |u^(order)|. Taken where a
+  // run's owner reads them: order 0 at a modal run's end rows (its stuck neighbours' forces),
+  // orders 2 to 5 at the exact stepper's end rows and sliding blocks (its screen).
   double bound(int i, int order) const { return bound_[order == 0 ? 0 : order - 1][i]; }
   TransientEnvelope envelope(const Run& r) const { return transient_envelope(*r.shape, q0_.data() + r.lo, p0_.data() + r.lo); }
   // u of block i about t as a polynomial in tau, c[j] = u^(j)(t) / j!, j = 0 .. deg, from its

@@ -28,8 +28,7 @@ void SpanModes::write(double* u, double* v, bool ends_only) {
 
 // Every row of a run (RunStore::write), with its offset.
 void SpanModes::write_rows(const Span& sp, double* u, double* v) {
-  store_.write(store_.run(sp.lo), t_, q_.data(), p_.data(), u, v);
-  for (int i = sp.lo; i < sp.hi; ++i) u[i] += du_[i], v[i] += dv_[i];
+  store_.write(store_.run(sp.lo), t_, q_.data(), p_.data(), u, v, false, du_.data(), dv_.data());
 }
 
 void SpanModes::write_near(const std::vector<int>& blocks, double* u, double* v) {
