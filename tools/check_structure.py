@@ -17,7 +17,10 @@ callers cannot. And src/ says why the code is as it is, not its history: an issu
 files, belongs in git and paper/choices.md.
 
 Inside integrate/ the folders form layers (src/springblock/README.md): no folder includes one that
-includes it, directly or through others (a file at integrate/'s top is a node of its own).
+includes it, directly or through others (a file at integrate/'s top is a node of its own). And a
+class or struct there holds at most MAX_CLASS_MEMBERS data members (static ones not counted): one
+that needs more is two. CLASSES_TO_SPLIT names the ones still over the limit; an entry that is no
+longer over it fails too, so the list only shrinks.
 
 Usage: python3 -m tools.check_structure SOURCE_DIR [--report]   (--report prints the longest functions)
 """
@@ -32,6 +35,20 @@ import sys
 
 MAX_INTEGRATE_FILE_LINES = 300
 MAX_FUNCTION_LINES = 80
+MAX_CLASS_MEMBERS = 10
+CLASSES_TO_SPLIT = {
+    "sb::event_detail::ActiveSet",
+    "sb::event_detail::EdgeMarch",
+    "sb::event_detail::EventRun",
+    "sb::event_detail::ModalRuns",
+    "sb::event_detail::QuietPhase",
+    "sb::event_detail::RunShape",
+    "sb::event_detail::RunShapes",
+    "sb::event_detail::RunStore",
+    "sb::event_detail::SpanModes",
+    "sb::event_detail::SpanScreen::Fn",
+    "sb::event_detail::Switching",
+}
 # Where the function limit applies: the library and the two command-line shells.
 FUNCTION_ROOTS = ["src", "reproduce"]
 INCLUDE_RE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
@@ -254,6 +271,30 @@ def integrate_folder_cycles(root):
     return cycles
 
 
+def class_members(root):
+    """Non-static data members per class or struct defined under integrate/ (None without ctags)."""
+    ctags = shutil.which("ctags-universal") or shutil.which("ctags")
+    if ctags is None:
+        return None
+    files = [str(p) for p in cxx_files(root, "src/springblock/integrate")]
+    out = subprocess.run([ctags, "--c++-kinds=m", "--fields=+s", "--fields-c++=+{properties}", "--output-format=json",
+                          "-f", "-", *files], capture_output=True, text=True, check=True).stdout
+    counts = {}
+    for line in out.splitlines():
+        tag = json.loads(line)
+        if tag.get("kind") == "member" and "static" not in tag.get("properties", "") and "scope" in tag:
+            counts[tag["scope"]] = counts.get(tag["scope"], 0) + 1
+    return counts
+
+
+def fat_classes(counts):
+    over = {k for k, n in counts.items() if n > MAX_CLASS_MEMBERS}
+    bad = [f"{k}: {counts[k]} data members (limit {MAX_CLASS_MEMBERS}): split it" for k in sorted(over - CLASSES_TO_SPLIT)]
+    bad += [f"{k} is listed in CLASSES_TO_SPLIT but is not over the limit: take it off the list"
+            for k in sorted(CLASSES_TO_SPLIT - over)]
+    return bad
+
+
 def main():
     root = pathlib.Path(sys.argv[1]).resolve()
     failures = long_files(root)
@@ -262,6 +303,12 @@ def main():
     failures += sys_path_edits(root)
     failures += history_in_src(root)
     rows = function_lengths(root)
+    members = class_members(root)
+    if members is not None:
+        failures += fat_classes(members)
+        if "--report" in sys.argv:
+            for k in sorted(CLASSES_TO_SPLIT & set(members), key=lambda k: -members[k]):
+                print(f"{members[k]:4d}  {k} (to split)")
     if rows is not None:
         failures += [f"{path}:{line} {name}: {n} lines (limit {MAX_FUNCTION_LINES})"
                      for n, path, name, line in rows if n > MAX_FUNCTION_LINES]
@@ -276,8 +323,9 @@ def main():
         print("structure: ctags not found, function lengths not checked (install universal-ctags)")
         return 77
     print("structure: integrate/ files <= %d lines, functions <= %d lines, no include cycle, no folder cycle in "
-          "integrate/, no sys.path edit, no issue number or date in src/'s comments"
-          % (MAX_INTEGRATE_FILE_LINES, MAX_FUNCTION_LINES))
+          "integrate/, its classes <= %d data members (%d still to split), no sys.path edit, no issue number or "
+          "date in src/'s comments"
+          % (MAX_INTEGRATE_FILE_LINES, MAX_FUNCTION_LINES, MAX_CLASS_MEMBERS, len(CLASSES_TO_SPLIT)))
     return 0
 
 
