@@ -43,11 +43,8 @@ CLASSES_TO_SPLIT = {
     "sb::event_detail::ModalRuns",
     "sb::event_detail::QuietPhase",
     "sb::event_detail::RunShape",
-    "sb::event_detail::RunShapes",
     "sb::event_detail::RunStore",
     "sb::event_detail::SpanModes",
-    "sb::event_detail::SpanScreen::Fn",
-    "sb::event_detail::Switching",
 }
 # Where the function limit applies: the library and the two command-line shells.
 FUNCTION_ROOTS = ["src", "reproduce"]

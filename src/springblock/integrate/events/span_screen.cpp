@@ -60,21 +60,21 @@ void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans,
   // block order, so it is the last one listed).
   auto add_stuck = [&](int j) {
     if (j < 0 || j >= N || (!fns_.empty() && fns_.back().block == j)) return;
-    Fn f{j, 0, {side_of(j - 1), side_of(j + 1)}, 0, 0, 0, 0, false, false, 0, 0, 0};
+    Fn f{j, 0, {side_of(j - 1), side_of(j + 1)}, {}, {}, 0, 0, 0};
     for (int side = 0; side < 2; ++side) {
       const int nb = side == 0 ? j - 1 : j + 1;
       if (f.side[side] == kSpan) f.M2 += K_int_ * spans.row_bound(nb, 2), f.M4 += K_int_ * spans.row_bound(nb, 4);
       if (f.side[side] == kModal) f.spread += K_int_ * active.modal_amplitude(nb);
     }
-    f.g0 = cheap(c, s, spans, active, f, s.t, false);
+    f.start.g = cheap(c, s, spans, active, f, s.t, false);
     fns_.push_back(f);
   };
   for (const BlockRange& r : spans.spans()) {
     add_stuck(r.lo - 1);
     for (int i = r.lo; i < r.hi; ++i) {
       if (s.dir[i] == 0) continue;
-      Fn f{i, s.dir[i], {kNone, kNone}, 0, 0, 0, 0, false, false, spans.row_bound(i, 3), spans.row_bound(i, 5), 0};
-      f.g0 = cheap(c, s, spans, active, f, s.t, false);
+      Fn f{i, s.dir[i], {kNone, kNone}, {}, {}, spans.row_bound(i, 3), spans.row_bound(i, 5), 0};
+      f.start.g = cheap(c, s, spans, active, f, s.t, false);
       fns_.push_back(f);
     }
     add_stuck(r.hi);
@@ -121,14 +121,14 @@ double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans
   const double chord = 0.125 * h * h;
   for (std::size_t k = 0; k < fns_.size(); ++k) {
     Fn& f = fns_[k];
-    f.g1 = cheap(c, s, spans, active, f, s.t + h, true);
-    f.d1_known = false;
+    f.end.g = cheap(c, s, spans, active, f, s.t + h, true);
+    f.end.known = false;
     root_[k] = kInf;
-    if (f.g1 > 0 && std::min(f.g0, f.g1) - f.M2 * chord > 0) continue;
-    if (f.g1 > 0) {
-      if (!f.d0_known) f.d0 = cheap(c, s, spans, active, f, s.t, false, true), f.d0_known = true;
-      f.d1 = cheap(c, s, spans, active, f, s.t + h, true, true), f.d1_known = true;
-      if (hermite_positive(f.g0, f.d0, f.g1, f.d1, h, f.M4)) continue;
+    if (f.end.g > 0 && std::min(f.start.g, f.end.g) - f.M2 * chord > 0) continue;
+    if (f.end.g > 0) {
+      if (!f.start.known) f.start.d = cheap(c, s, spans, active, f, s.t, false, true), f.start.known = true;
+      f.end.d = cheap(c, s, spans, active, f, s.t + h, true, true), f.end.known = true;
+      if (hermite_positive(f.start.g, f.start.d, f.end.g, f.end.d, h, f.M4)) continue;
     }
     ++polynomial_searches;
     // A root later than best + window h can neither be the event nor join it (the final best is
@@ -144,7 +144,7 @@ double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans
 }
 
 void SpanScreen::accept() {
-  for (Fn& f : fns_) f.g0 = f.g1, f.d0 = f.d1, f.d0_known = f.d1_known;
+  for (Fn& f : fns_) f.start = f.end;
 }
 
 // g over the step as a polynomial in tau = t - s.t: the rows' Taylor polynomials combined as the

@@ -51,13 +51,15 @@ class SpanScreen {
  private:
   static constexpr int D = SpanModes::kDegree;
   enum Side : std::uint8_t { kNone, kSpan, kSettled, kModal, kFixed };
+  struct Value {
+    double g = 0, d = 0;  // g, and its slope where known
+    bool known = false;   // d is known
+  };
   struct Fn {
     int block;
     std::int8_t dir;  // a sliding block's direction; 0 for a stuck block's threshold
     Side side[2];     // a stuck block's neighbours (left, right)
-    double g0, g1;    // g (or its cheap lower bound) at the step's start and end
-    double d0, d1;    // their slopes, where known (d0_known, d1_known)
-    bool d0_known, d1_known;
+    Value start, end;  // g (or its cheap lower bound) at the step's start and end, and its slope
     double M2, M4;    // bounds on |g''| and |g''''| (of the part that is not a modal bound)
     double spread;    // K_int times a modal neighbour's bound (0 without one)
   };

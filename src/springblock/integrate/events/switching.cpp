@@ -74,7 +74,7 @@ int Switching::apply(const Chain& c, State& s, bool full) {
     for (int i = 0; i < c.N; ++i)
       if (c.contact[i]) work_.push_back(i);
   } else {
-    work_ = flag_list_;
+    work_ = flagged_.list();
   }
   int made = 0;
   bool first_pass = true, changed = true;
@@ -82,18 +82,15 @@ int Switching::apply(const Chain& c, State& s, bool full) {
     changed = false;
     for (int i : work_) {
       if (!c.contact[i]) continue;
-      const int m = apply_rules(c, s, i, first_pass && flagged_[i]);
+      const int m = apply_rules(c, s, i, first_pass && flagged_.has(i));
       if (m > 0) {
-        if (!touched_[i]) touched_[i] = 1, touched_list_.push_back(i);
+        touched_.add(i);
         update(c, s, i);
       }
       made += m;
       changed = changed || m > 0;
     }
-    if (first_pass) {
-      for (int i : flag_list_) flagged_[i] = 0;
-      flag_list_.clear();
-    }
+    if (first_pass) flagged_.clear();
     first_pass = false;
     if (at_instant_ + made > limit) throw_cascade(limit, s.t);
   }

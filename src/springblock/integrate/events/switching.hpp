@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "springblock/integrate/block_set.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 
@@ -30,14 +31,12 @@ int apply_rules(const Chain& c, State& s, int i, bool event_here);
 
 class Switching {
  public:
-  explicit Switching(int N) : flagged_(N, 0), touched_(N, 0), dir_seen_(N, 0), mobile_(N), f_kin_(N) {}
+  explicit Switching(int N) : flagged_(N), touched_(N), dir_seen_(N, 0), mobile_(N), f_kin_(N) {}
 
   // Mark a block whose event was located at the current instant (cleared by apply()).
-  void flag(int i) {
-    if (!flagged_[i]) flagged_[i] = 1, flag_list_.push_back(i);
-  }
+  void flag(int i) { flagged_.add(i); }
   // The blocks flagged since the last apply(), in flagging order.
-  const std::vector<int>& flagged() const { return flag_list_; }
+  const std::vector<int>& flagged() const { return flagged_.list(); }
   // Apply the rules at s.t; returns the number of switches made. Throws on a cascade.
   int apply(const Chain& c, State& s, bool full = false);
   // Rebuild mobile / f_kin from s.dir (at the start of a run).
@@ -45,12 +44,9 @@ class Switching {
 
   // Blocks switched since the last clear_touched(), 1 per block (a stop followed by a restart
   // at the same instant leaves dir unchanged, so dir alone does not show it).
-  const std::uint8_t* touched() const { return touched_.data(); }
-  const std::vector<int>& touched_list() const { return touched_list_; }  // the same blocks, in switching order
-  void clear_touched() {
-    for (int i : touched_list_) touched_[i] = 0;
-    touched_list_.clear();
-  }
+  const std::uint8_t* touched() const { return touched_.flags(); }
+  const std::vector<int>& touched_list() const { return touched_.list(); }  // the same blocks, in switching order
+  void clear_touched() { touched_.clear(); }
   const double* mobile() const { return mobile_.data(); }  // 1 = groove or sliding, 0 = stuck
   const double* f_kin() const { return f_kin_.data(); }    // signed kinetic friction
   int n_sliding() const { return n_sliding_; }
@@ -59,8 +55,8 @@ class Switching {
   // Keep mobile_, f_kin_ and n_sliding_ in step with s.dir for block i.
   void update(const Chain& c, const State& s, int i);
 
-  std::vector<std::uint8_t> flagged_, touched_;
-  std::vector<int> flag_list_, work_, touched_list_;
+  BlockSet flagged_, touched_;
+  std::vector<int> work_;
   std::vector<std::int8_t> dir_seen_;  // s.dir as mobile_ / f_kin_ last saw it
   std::vector<double> mobile_, f_kin_;
   int n_sliding_ = 0;

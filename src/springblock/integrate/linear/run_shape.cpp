@@ -109,8 +109,7 @@ double RunShapes::step_for(const Chain& c) {
 }
 
 RunShapes::RunShapes(const Chain& c)
-    : N_(c.N), K_s_(c.K_s), K_int_(c.K_int), m_(c.m), gamma_(c.gamma), v_(c.v_slider), step_(step_for(c)),
-      march_step_(EdgeMarch::grid_step(c.omega_max())) {}
+    : c_(c), step_(step_for(c)), march_step_(EdgeMarch::grid_step(c.omega_max())) {}
 
 const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts) {
   const std::size_t slot = 4 * static_cast<std::size_t>(n) + 2 * left + right;
@@ -122,33 +121,34 @@ const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts)
 }
 
 RunShape RunShapes::make(int n, bool left, bool right) const {
+  const double K_s = c_.K_s, K_int = c_.K_int, mass = c_.m, gamma = c_.gamma;
   RunShape sh;
   sh.n = n, sh.left = left, sh.right = right;
-  for (int k = 0; k < n; ++k) sh.diag.push_back(K_s_ + ((k > 0 || left) ? K_int_ : 0.0) + ((k + 1 < n || right) ? K_int_ : 0.0));
-  sh.off.assign(std::max(n - 1, 0), -K_int_);
+  for (int k = 0; k < n; ++k) sh.diag.push_back(K_s + ((k > 0 || left) ? K_int : 0.0) + ((k + 1 < n || right) ? K_int : 0.0));
+  sh.off.assign(std::max(n - 1, 0), -K_int);
   factor(sh);
   // The affine path's pieces, each K^-1 of its forcing.
-  sh.B.assign(n, K_s_ * v_);
+  sh.B.assign(n, K_s * c_.v_slider);
   sh.solve(sh.B.data(), sh.B.data());
   sh.a0.resize(n), sh.gL.assign(n, 0.0), sh.gR.assign(n, 0.0);
-  for (int k = 0; k < n; ++k) sh.a0[k] = -m_ * gamma_ * sh.B[k];
+  for (int k = 0; k < n; ++k) sh.a0[k] = -mass * gamma * sh.B[k];
   sh.solve(sh.a0.data(), sh.a0.data());
-  if (left) sh.gL[0] = K_int_, sh.solve(sh.gL.data(), sh.gL.data());
-  if (right) sh.gR[n - 1] = K_int_, sh.solve(sh.gR.data(), sh.gR.data());
+  if (left) sh.gL[0] = K_int, sh.solve(sh.gL.data(), sh.gL.data());
+  if (right) sh.gR[n - 1] = K_int, sh.solve(sh.gR.data(), sh.gR.data());
   // The modes and the constants of the derivative bounds: from q'' = -gamma q' - omega^2 q and
   // omega |q| <= sqrt(E), |q''| <= (gamma + omega) sqrt(E) and q^(j+2) = -gamma q^(j+1) -
   // omega^2 q^(j) for the higher ones.
-  cached_modes(K_s_, K_int_, n, left, right, sh.Q, sh.lambda);
+  cached_modes(K_s, K_int, n, left, right, sh.Q, sh.lambda);
   sh.Qr.resize(static_cast<std::size_t>(n) * n);
   for (int r = 0; r < n; ++r)
     for (int k = 0; k < n; ++k) sh.Qr[static_cast<std::size_t>(r) * n + k] = sh.Q(r, k);
   for (int k = 0; k < n; ++k) {
-    const DampedMode m(0.5 * gamma_, sh.lambda[k] / m_);
+    const DampedMode m(0.5 * gamma, sh.lambda[k] / mass);
     sh.modes.push_back(m);
     sh.w2.push_back(m.omega2);
     sh.inv_omega.push_back(1.0 / m.omega);
-    const double c2 = gamma_ + m.omega, c3 = gamma_ * c2 + m.omega2;
-    const double c4 = gamma_ * c3 + m.omega2 * c2, c5 = gamma_ * c4 + m.omega2 * c3;
+    const double c2 = gamma + m.omega, c3 = gamma * c2 + m.omega2;
+    const double c4 = gamma * c3 + m.omega2 * c2, c5 = gamma * c4 + m.omega2 * c3;
     sh.c[0].push_back(c2), sh.c[1].push_back(c3), sh.c[2].push_back(c4), sh.c[3].push_back(c5);
   }
   return sh;

@@ -96,7 +96,7 @@ class RunShapes {
   explicit RunShapes(const Chain& c);
   // The shape of run r of the chain, with the transitions `parts` (RunShape::Parts) made.
   // References stay valid for the life of this object.
-  const RunShape& of(BlockRange r, std::uint8_t parts = 0) { return get(r.size(), r.lo > 0, r.hi < N_, parts); }
+  const RunShape& of(BlockRange r, std::uint8_t parts = 0) { return get(r.size(), r.lo > 0, r.hi < c_.N, parts); }
   const RunShape& get(int n, bool left, bool right, std::uint8_t parts = 0);
   // Sample transitions of every shape, present and future.
   void set_sample_dt(double dt);
@@ -111,8 +111,8 @@ class RunShapes {
   RunShape make(int n, bool left, bool right) const;
   void add_parts(RunShape& sh, std::uint8_t parts) const;
   void set_sample_transitions(RunShape& sh) const;
-  int N_;
-  double K_s_, K_int_, m_, gamma_, v_, step_, march_step_, sample_dt_ = 0;
+  const Chain& c_;
+  double step_, march_step_, sample_dt_ = 0;
   std::map<std::tuple<int, bool, bool>, RunShape> shapes_;
   std::vector<RunShape*> index_;  // shapes_ by 4 n + 2 left + right: every projection looks one up
 };
