@@ -40,11 +40,8 @@ CLASSES_TO_SPLIT = {
     "sb::event_detail::ActiveSet",
     "sb::event_detail::EdgeMarch",
     "sb::event_detail::EventRun",
-    "sb::event_detail::ModalRuns",
     "sb::event_detail::QuietPhase",
     "sb::event_detail::RunShape",
-    "sb::event_detail::RunStore",
-    "sb::event_detail::SpanModes",
 }
 # Where the function limit applies: the library and the two command-line shells.
 FUNCTION_ROOTS = ["src", "reproduce"]

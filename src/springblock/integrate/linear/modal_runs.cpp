@@ -16,26 +16,19 @@ constexpr int kSampleResync = 64;
 }  // namespace
 
 ModalRuns::ModalRuns(const Chain& c, RunStore& store)
-    : N_(c.N),
-      K_int_(c.K_int),
+    : K_int_(c.K_int),
       eps_v_(kStopMargin * c.v_slider),
-      // One grid step for every run: the fastest mode any run can have is below omega_max, so
-      // the per-mode transitions are computed once per shape (RunShape::march).
-      H_(store.shapes().march_step()),
       store_(store),
       run_of_(c.N, -1),
-      qc_(c.N),
-      qdc_(c.N),
-      cq_(c.N),
-      cp_(c.N),
-      vq_(c.N),
-      va_(c.N) {}
+      cursor_(c.N),
+      scratch_(c.N),
+      velocity_(c.N) {}
 
 void ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool grooves) {
   const RunStore::Run& rec =
       store_.project(c, {lo, hi}, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kModal);
   Run run{lo, hi, s.t, 0, false, grooves};
-  if (grooves) run.settled_after = s.t + store_.envelope(rec).time_below(eps_u_, eps_v_settle_);
+  if (grooves) run.settled_after = s.t + store_.envelope(rec).time_below(settle_.u, settle_.v);
   for (int i = lo; i < hi; ++i) run_of_[i] = static_cast<int>(runs_.size());
   runs_.push_back(run);
 }
@@ -63,33 +56,33 @@ void ModalRuns::clear() {
 
 void ModalRuns::scratch_at(Run& r, double t) {
   if (r.scratch_t == t) return;
-  store_.coords(record(r), t, cq_.data(), cp_.data());
+  store_.coords(record(r), t, scratch_.q.data(), scratch_.p.data());
   r.scratch_t = t;
 }
 
 void ModalRuns::row_taylor(int i, double t, int deg, double* c) {
   Run& r = runs_[run_of_[i]];
   scratch_at(r, t);
-  store_.taylor(i, t, cq_.data(), cp_.data(), deg, c);
+  store_.taylor(i, t, scratch_.q.data(), scratch_.p.data(), deg, c);
 }
 
 void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool ends_only) {
   const double sample_dt = store_.shapes().sample_dt();
   for (Run& r : runs_) {
     const RunStore::Run& rec = record(r);
-    const double* q = qc_.data();
-    const double* qd = qdc_.data();
+    const double* q = cursor_.q.data();
+    const double* qd = cursor_.p.data();
     const bool step = at_sample && r.cursor && sample_dt > 0 &&
                       std::fabs((t - r.tc) - sample_dt) <= 1e-9 * sample_dt && r.since + 1 < kSampleResync;
     if (step) {
-      rec.shape->step_sample(qc_.data() + r.lo, qdc_.data() + r.lo);
+      rec.shape->step_sample(cursor_.q.data() + r.lo, cursor_.p.data() + r.lo);
       ++r.since;
     } else if (at_sample) {
-      store_.coords(rec, t, qc_.data(), qdc_.data());
+      store_.coords(rec, t, cursor_.q.data(), cursor_.p.data());
       r.since = 0;
     } else {
       scratch_at(r, t);  // off-sample evaluations must not move the cursor
-      q = cq_.data(), qd = cp_.data();
+      q = scratch_.q.data(), qd = scratch_.p.data();
     }
     if (at_sample) r.tc = t, r.cursor = true;
     store_.write(rec, t, q, qd, u, v, ends_only && r.grooves);
@@ -99,7 +92,7 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool
 void ModalRuns::materialise_run(int i, double t, double* u, double* v) {
   Run& r = runs_[run_of_[i]];
   scratch_at(r, t);
-  store_.write(record(r), t, cq_.data(), cp_.data(), u, v);
+  store_.write(record(r), t, scratch_.q.data(), scratch_.p.data(), u, v);
 }
 
 }  // namespace sb::event_detail

@@ -44,7 +44,7 @@ class ModalRuns {
   // No run is modal.
   void clear();
   // Transients below these (in u and v, every row) count as gone: see settled_after().
-  void set_settle_scales(double eps_u, double eps_v) { eps_u_ = eps_u, eps_v_settle_ = eps_v; }
+  void set_settle_scales(double eps_u, double eps_v) { settle_ = {eps_u, eps_v}; }
   // For the run holding block i: a time after which its deviation from the affine path is
   // below the settle scales in every row (envelope.hpp, from its modes at projection;
   // +inf without damping or with a mode not underdamped, where no bound is taken).
@@ -97,28 +97,30 @@ class ModalRuns {
  private:
   struct Run {
     int lo, hi;
-    double tc;        // time of the sample cursor qc, qdc
+    double tc;        // time of the sample cursor
     int since = 0;    // recurrence steps since the cursor was last set from the closed form
     bool cursor = false;
     bool grooves = false;  // no contact block in it
     double settled_after = std::numeric_limits<double>::infinity();
-    double scratch_t = std::numeric_limits<double>::quiet_NaN();  // time of cq_, cp_ (scratch_at)
+    double scratch_t = std::numeric_limits<double>::quiet_NaN();  // time of its scratch coordinates (scratch_at)
   };
-  // The run's modal coordinates at t into the scratch slots cq_, cp_ [r.lo, r.hi), computed once
+  // The run's modal coordinates at t into the scratch slots [r.lo, r.hi), computed once
   // per t: a switch searches a run's stops and both its stuck neighbours' crossings from the
   // same s.t.
   void scratch_at(Run& r, double t);
   const RunStore::Run& record(const Run& r) const { return store_.run(r.lo); }
 
-  int N_;
-  double K_int_, eps_v_, H_;
-  double eps_u_ = 0, eps_v_settle_ = 0;  // settle scales (set_settle_scales)
+  struct Scales {
+    double u = 0, v = 0;
+  };
+  double K_int_, eps_v_;
+  Scales settle_;  // set_settle_scales
   RunStore& store_;
   std::vector<Run> runs_;
-  std::vector<int> run_of_;       // block -> index in runs_ (-1: not in a modal run)
-  std::vector<double> qc_, qdc_;  // per mode slot: sample cursor
-  std::vector<double> cq_, cp_;   // per mode slot: scratch coordinates
-  std::vector<double> vq_, va_;   // per mode slot: velocity modes' initial values at s.t
+  std::vector<int> run_of_;  // block -> index in runs_ (-1: not in a modal run)
+  Coords cursor_;            // per mode slot: the sample cursor
+  Coords scratch_;           // per mode slot: coordinates at a run's scratch_t
+  Coords velocity_;          // per mode slot: the velocity modes' initial values at s.t (stop_time)
   EdgeMarch march_;
 };
 

@@ -20,16 +20,16 @@ ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, boo
   for (int k = 0; k < n; ++k) {
     const int slot = r.lo + k;
     const DampedMode& m = sh.modes[k];
-    vq_[slot] = cp_[slot];
-    va_[slot] = -c.gamma * cp_[slot] - m.omega2 * cq_[slot];
+    velocity_.q[slot] = scratch_.p[slot];
+    velocity_.p[slot] = -c.gamma * scratch_.p[slot] - m.omega2 * scratch_.q[slot];
     march_.add_mode(-dir * row[k], m, slot, sh.march[k].data());
   }
-  const double v = store_.row_v(i, cp_.data());
-  march_.finish(H_);
+  const double v = store_.row_v(i, scratch_.p.data());
+  march_.finish(store_.shapes().march_step());
   march_.set_affine(0.0, 0.0);
   // A block that has just started to slide sits at v = 0 exactly (see EdgeMarch's open origin).
   march_.set_sense(EdgeMarch::Sense::Upper, fresh ? dir * s.v[i] <= 0.0 : dir * v <= 0.0);
-  const double tau = march_.first_crossing(vq_.data(), va_.data(), dir * store_.B(i) + eps_v_, t_limit - s.t, s.t);
+  const double tau = march_.first_crossing(velocity_.q.data(), velocity_.p.data(), dir * store_.B(i) + eps_v_, t_limit - s.t, s.t);
   return {s.t + tau, march_.hit_limit, t_limit};
 }
 
@@ -45,7 +45,7 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
     double a = c.K_s * (c.v_slider * s.t - s.u[j]), b = c.K_s * c.v_slider, spread = 0;
     for (int side = 0; side < 2; ++side) {
       const int nb = side == 0 ? j - 1 : j + 1;
-      if (nb < 0 || nb >= N_) continue;
+      if (nb < 0 || nb >= static_cast<int>(run_of_.size())) continue;
       if (run_of_[nb] < 0) {
         a += K_int_ * (base[side] - s.u[j]), b += K_int_ * nb_B[side];
         continue;
@@ -62,7 +62,7 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
   double a = c.K_s * (c.v_slider * s.t - s.u[j]), b = c.K_s * c.v_slider;
   for (int side = 0; side < 2; ++side) {
     const int nb = side == 0 ? j - 1 : j + 1;
-    if (nb < 0 || nb >= N_) continue;
+    if (nb < 0 || nb >= static_cast<int>(run_of_.size())) continue;
     if (run_of_[nb] < 0) {
       a += K_int_ * (base[side] - s.u[j]);
       b += K_int_ * nb_B[side];
@@ -77,10 +77,10 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
     b += K_int_ * store_.B(nb);
     for (int k = 0; k < r.hi - r.lo; ++k) march_.add_mode(K_int_ * row[k], sh.modes[k], r.lo + k, sh.march[k].data());
   }
-  march_.finish(H_);
+  march_.finish(store_.shapes().march_step());
   march_.set_affine(a, b);
   march_.set_sense(EdgeMarch::Sense::Abs, false);
-  const double tau = march_.first_crossing(cq_.data(), cp_.data(), c.f_static[j], t_limit - s.t, s.t);
+  const double tau = march_.first_crossing(scratch_.q.data(), scratch_.p.data(), c.f_static[j], t_limit - s.t, s.t);
   return {s.t + tau, march_.hit_limit, t_limit};
 }
 

@@ -46,20 +46,15 @@ constexpr int kRowWise = 8;
 }  // namespace
 
 RunStore::RunStore(const Chain& c, RunShapes& shapes)
-    : N_(c.N),
-      gamma_(c.gamma),
+    : gamma_(c.gamma),
       shapes_(shapes),
-      runs_(c.N),
-      first_(c.N, -1),
+      records_(c.N),
       A_(c.N),
       B_(c.N),
-      q0_(c.N),
-      p0_(c.N),
+      modes_(c.N),
       sE_(c.N),
-      x_(c.N),
-      y_(c.N),
-      su_(c.N),
-      sv_(c.N) {
+      dev_(c.N),
+      sums_(c.N) {
   for (auto& b : bound_) b.assign(c.N, std::numeric_limits<double>::infinity());
 }
 
@@ -74,26 +69,18 @@ std::uint8_t parts_for(RunStore::Owner owner) {
   }
 }
 
-RunStore::Run& RunStore::claim(BlockRange r, Owner owner) {
+RunStore::Run& RunStore::Records::claim(BlockRange r, const RunShape* shape, Owner owner) {
   for (int i = r.lo; i < r.hi; ++i)
     if (first_[i] >= 0) drop(first_[i]);
   std::fill(first_.begin() + r.lo, first_.begin() + r.hi, r.lo);
   Run& run = runs_[r.lo];
-  run = Run{r.lo, r.hi, &shapes_.of(r, parts_for(owner)), 0.0, false, owner, ++serial_};
+  run = Run{r.lo, r.hi, shape, 0.0, false, owner, ++serial_};
   return run;
 }
 
-void RunStore::drop(int lo) {
-  const Run& r = runs_[lo];
-  std::fill(first_.begin() + r.lo, first_.begin() + r.hi, -1);
-}
+void RunStore::drop(int lo) { records_.drop(lo); }
 
-void RunStore::clear() { std::fill(first_.begin(), first_.end(), -1); }
-
-const RunStore::Run* RunStore::exact(BlockRange r) const {
-  if (first_[r.lo] != r.lo || runs_[r.lo].hi != r.hi) return nullptr;
-  return &runs_[r.lo];
-}
+void RunStore::clear() { records_.clear(); }
 
 // A = a0 + u_left gL + u_right gR - K^-1 f_kin and B from the shape's pieces (run_shape.hpp).
 void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir) {
@@ -107,7 +94,7 @@ void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::in
   bool friction = false;
   for (int k = 0; k < n && !friction; ++k) friction = dir[lo + k] != 0;
   if (!friction) return;
-  double* f = x_.data();
+  double* f = dev_.q.data();
   for (int k = 0; k < n; ++k) f[k] = dir[lo + k] * c.f_kinetic[lo + k];
   sh.solve(f, f);
   for (int k = 0; k < n; ++k) A_[lo + k] -= f[k];
@@ -115,24 +102,25 @@ void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::in
 
 const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, const double* u, const double* v,
                                        const std::int8_t* dir, Owner owner, bool with_modes) {
-  Run& run = claim(r, owner);
+  Run& run = records_.claim(r, &shapes_.of(r, parts_for(owner)), owner);
   run.t0 = t;
   run.modes = with_modes;
   set_path(c, run, u, dir);
   const int lo = r.lo, n = r.size();
   if (!with_modes) {
-    std::fill(q0_.begin() + lo, q0_.begin() + r.hi, 0.0);
-    std::fill(p0_.begin() + lo, p0_.begin() + r.hi, 0.0);
+    std::fill(modes_.q.begin() + lo, modes_.q.begin() + r.hi, 0.0);
+    std::fill(modes_.p.begin() + lo, modes_.p.begin() + r.hi, 0.0);
     std::fill(sE_.begin() + lo, sE_.begin() + r.hi, 0.0);
   } else {
-    ++projections;
+    double* x = dev_.q.data();
+    double* y = dev_.p.data();
     for (int k = 0; k < n; ++k) {
-      x_[k] = u[lo + k] - A_[lo + k] - B_[lo + k] * t;
-      y_[k] = v[lo + k] - B_[lo + k];
+      x[k] = u[lo + k] - A_[lo + k] - B_[lo + k] * t;
+      y[k] = v[lo + k] - B_[lo + k];
     }
-    rows_times(n, run.shape->Qr.data(), x_.data(), y_.data(), q0_.data() + lo, p0_.data() + lo);
+    rows_times(n, run.shape->Qr.data(), x, y, modes_.q.data() + lo, modes_.p.data() + lo);
     for (int k = 0; k < n; ++k) {
-      const double qk = q0_[lo + k], pk = p0_[lo + k];
+      const double qk = modes_.q[lo + k], pk = modes_.p[lo + k];
       sE_[lo + k] = std::sqrt(pk * pk + run.shape->w2[k] * qk * qk);
     }
   }
@@ -159,27 +147,27 @@ void RunStore::set_bounds(const Run& run, const std::int8_t* dir) {
 }
 
 void RunStore::to_path(int lo, Owner owner) {
-  Run& run = runs_[lo];
+  Run& run = records_.at(lo);
   run.owner = owner;
   run.modes = false;
   for (int i = run.lo; i < run.hi; ++i) {
-    q0_[i] = p0_[i] = sE_[i] = 0.0;
+    modes_.q[i] = modes_.p[i] = sE_[i] = 0.0;
     for (auto& b : bound_) b[i] = 0.0;
   }
 }
 
 void RunStore::rebase(int lo, double t) {
-  Run& run = runs_[lo];
-  if (run.modes) coords(run, t, q0_.data(), p0_.data());
+  Run& run = records_.at(lo);
+  if (run.modes) coords(run, t, modes_.q.data(), modes_.p.data());
   run.t0 = t;
 }
 
 void RunStore::coords(const Run& r, double t, double* q, double* p) const {
-  r.shape->evolve(q0_.data() + r.lo, p0_.data() + r.lo, t - r.t0, q + r.lo, p + r.lo);
+  r.shape->evolve(modes_.q.data() + r.lo, modes_.p.data() + r.lo, t - r.t0, q + r.lo, p + r.lo);
 }
 
 double RunStore::u(int i, double t) const {
-  const Run& r = runs_[first_[i]];
+  const Run& r = records_.run(i);
   if (!r.modes) return path_u(i, t);
   double q[64], p[64];  // the modes in blocks of 64: no allocation
   const double* row = r.shape->row(i - r.lo);
@@ -187,14 +175,14 @@ double RunStore::u(int i, double t) const {
   double d = 0;
   for (int k0 = 0; k0 < r.n(); k0 += 64) {
     const int m = std::min(r.n() - k0, 64);
-    r.shape->evolve(q0_.data() + r.lo + k0, p0_.data() + r.lo + k0, tau, q, p, k0, m);
+    r.shape->evolve(modes_.q.data() + r.lo + k0, modes_.p.data() + r.lo + k0, tau, q, p, k0, m);
     for (int k = 0; k < m; ++k) d += row[k0 + k] * q[k];
   }
   return path_u(i, t) + d;
 }
 
 double RunStore::row_a(int i, const double* q, const double* p) const {
-  const Run& r = runs_[first_[i]];
+  const Run& r = records_.run(i);
   const int n = r.n();
   const double* row = r.shape->row(i - r.lo);
   const double* w2 = r.shape->w2.data();
@@ -226,8 +214,8 @@ void RunStore::write(const Run& r, double t, const double* q, const double* p, d
   } else if (n <= kRowWise) {
     for (int k = 0; k < n; ++k) by_row(k);
   } else {
-    columns_times(n, sh.Q.data(), q + lo, p + lo, su_.data(), sv_.data());
-    for (int k = 0; k < n; ++k) put(k, su_[k], sv_[k]);
+    columns_times(n, sh.Q.data(), q + lo, p + lo, sums_.q.data(), sums_.p.data());
+    for (int k = 0; k < n; ++k) put(k, sums_.q[k], sums_.p[k]);
   }
 }
 
@@ -236,7 +224,7 @@ void RunStore::write_path(const Run& r, double t, double* u, double* v) const {
 }
 
 void RunStore::taylor(int i, double t, const double* q, const double* p, int deg, double* c) const {
-  const Run& r = runs_[first_[i]];
+  const Run& r = records_.run(i);
   const double* row = r.shape->row(i - r.lo);
   c[0] = path_u(i, t);
   c[1] = B_[i];

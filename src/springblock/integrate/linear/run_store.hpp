@@ -20,6 +20,7 @@
 // holds drops that record, and an owner drops its records when it lets the runs go, so what the
 // store holds is always current. Records carry the serial number of their projection, so a
 // user that keeps a run across switches can tell whether it is still the one it projected.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -29,6 +30,18 @@
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
+
+// Modal coordinates q and their rates p, per slot of the store (the mode k of the run starting at
+// block lo in slot lo + k): a run's state at one time, as its users keep it.
+struct Coords {
+  std::vector<double> q, p;
+  explicit Coords(int N = 0) : q(N), p(N) {}
+};
+// The same at a time t.
+struct Moment {
+  double t = 0;
+  Coords x;
+};
 
 class RunStore {
  public:
@@ -59,17 +72,17 @@ class RunStore {
   void drop(int lo);
   void clear();
 
-  bool holds(int i) const { return first_[i] >= 0; }
-  const Run& run(int i) const { return runs_[first_[i]]; }
-  Owner owner(int i) const { return first_[i] >= 0 ? runs_[first_[i]].owner : kNone; }
+  bool holds(int i) const { return records_.holds(i); }
+  const Run& run(int i) const { return records_.run(i); }
+  Owner owner(int i) const { return records_.holds(i) ? records_.run(i).owner : kNone; }
   // The record spanning exactly r, or nullptr.
-  const Run* exact(BlockRange r) const;
+  const Run* exact(BlockRange r) const { return records_.exact(r); }
 
   double A(int i) const { return A_[i]; }
   double B(int i) const { return B_[i]; }
   double path_u(int i, double t) const { return A_[i] + B_[i] * t; }
-  const double* q0() const { return q0_.data(); }
-  const double* p0() const { return p0_.data(); }
+  const double* q0() const { return modes_.q.data(); }
+  const double* p0() const { return modes_.p.data(); }
 
   // The modes of run r at t into slots r.lo .. of q, p.
   void coords(const Run& r, double t, double* q, double* p) const;
@@ -89,16 +102,36 @@ class RunStore {
   // run's owner reads them: order 0 at a modal run's end rows (its stuck neighbours' forces),
   // orders 2 to 5 at the exact stepper's end rows and sliding blocks (its screen).
   double bound(int i, int order) const { return bound_[order == 0 ? 0 : order - 1][i]; }
-  TransientEnvelope envelope(const Run& r) const { return transient_envelope(*r.shape, q0_.data() + r.lo, p0_.data() + r.lo); }
+  TransientEnvelope envelope(const Run& r) const { return transient_envelope(*r.shape, q0() + r.lo, p0() + r.lo); }
   // u of block i about t as a polynomial in tau, c[j] = u^(j)(t) / j!, j = 0 .. deg, from its
   // run's coordinates q, p at t.
   void taylor(int i, double t, const double* q, const double* p, int deg, double* c) const;
 
-  long projections = 0;  // diagnostics: projections with modes made so far
 
  private:
+  // Which runs exist: the records by first block, and each block's run.
+  class Records {
+   public:
+    explicit Records(int N) : runs_(N), first_(N, -1) {}
+    // A new record for r (dropping any record that holds one of its blocks).
+    Run& claim(BlockRange r, const RunShape* shape, Owner owner);
+    void drop(int lo) { std::fill(first_.begin() + runs_[lo].lo, first_.begin() + runs_[lo].hi, -1); }
+    void clear() { std::fill(first_.begin(), first_.end(), -1); }
+    bool holds(int i) const { return first_[i] >= 0; }
+    const Run& run(int i) const { return runs_[first_[i]]; }
+    Run& at(int lo) { return runs_[lo]; }
+    const Run* exact(BlockRange r) const {
+      return first_[r.lo] == r.lo && runs_[r.lo].hi == r.hi ? &runs_[r.lo] : nullptr;
+    }
+
+   private:
+    std::vector<Run> runs_;   // by first block
+    std::vector<int> first_;  // per block: first block of the run holding it (-1: none)
+    std::int64_t serial_ = 0;
+  };
+
   double row_dot(int i, const double* x) const {
-    const Run& r = runs_[first_[i]];
+    const Run& r = records_.run(i);
     const int n = r.n();
     const double* row = r.shape->row(i - r.lo);
     const double* xs = x + r.lo;
@@ -106,20 +139,17 @@ class RunStore {
     for (int k = 0; k < n; ++k) d += row[k] * xs[k];
     return d;
   }
-  Run& claim(BlockRange r, Owner owner);
   void set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir);
   void set_bounds(const Run& run, const std::int8_t* dir);
 
-  int N_;
   double gamma_;
   RunShapes& shapes_;
-  std::int64_t serial_ = 0;
-  std::vector<Run> runs_;               // by first block
-  std::vector<int> first_;              // per block: first block of the run holding it (-1: none)
-  std::vector<double> A_, B_;           // per block: the affine path
-  std::vector<double> q0_, p0_, sE_;    // per slot: modes at t0, sqrt of their energies
-  std::vector<double> bound_[5];        // per block: bound() of orders 0, 2, 3, 4, 5
-  std::vector<double> x_, y_, su_, sv_;  // work arrays
+  Records records_;
+  std::vector<double> A_, B_;      // per block: the affine path
+  Coords modes_;                   // per slot: q0, p0
+  std::vector<double> sE_;         // per slot: sqrt of the modes' energies at t0
+  std::vector<double> bound_[5];   // per block: bound() of orders 0, 2, 3, 4, 5
+  Coords dev_, sums_;              // work: a projection's deviation (u and v), a write's Q q and Q p
 };
 
 }  // namespace sb::event_detail

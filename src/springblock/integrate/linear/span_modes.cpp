@@ -26,27 +26,20 @@ SB_KERNEL_CLONES void grid_transition(int n, const double* __restrict p00, const
 }  // namespace
 
 SpanModes::SpanModes(const Chain& c, RunStore& store)
-    : N_(c.N),
-      H_(store.shapes().step()),
-      store_(store),
-      span_of_(c.N, -1),
-      du_(c.N),
-      dv_(c.N),
-      q_(c.N),
-      p_(c.N),
-      qn_(c.N),
-      pn_(c.N) {}
+    : H_(store.shapes().step()), store_(store), span_of_(c.N, -1), du_(c.N), dv_(c.N), now_{0, Coords(c.N)},
+      end_{0, Coords(c.N)} {}
 
 void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockRange>& spans,
                         const std::uint8_t* switched) {
   // Slots are the blocks' own indices, so a kept run's modes stay where they are.
   kept_.swap(spans_);
   spans_.clear();
-  const bool current = t_ == s.t;
+  const bool current = now_.t == s.t;
+  const int N = static_cast<int>(span_of_.size());
   for (const BlockRange& r : spans) {
     const int k = span_of_[r.lo];
     bool keep = current && k >= 0 && kept_[k].lo == r.lo && kept_[k].hi == r.hi && mine(kept_[k]) != nullptr;
-    for (int i = std::max(r.lo - 1, 0); keep && i < std::min(r.hi + 1, N_); ++i) keep = !switched[i];
+    for (int i = std::max(r.lo - 1, 0); keep && i < std::min(r.hi + 1, N); ++i) keep = !switched[i];
     if (keep) spans_.push_back(kept_[k]), spans_.back().fresh = false, kept_[k].id = -1;
     else spans_.push_back({r.lo, r.hi, 0, 0, false, true});
   }
@@ -58,7 +51,7 @@ void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockR
   for (std::size_t k = 0; k < spans_.size(); ++k)
     std::fill(span_of_.begin() + spans_[k].lo, span_of_.begin() + spans_[k].hi, static_cast<int>(k));
   ranges_ = spans;
-  t_ = s.t;
+  now_.t = s.t;
   for (Span& sp : spans_)
     if (sp.fresh) project_one(c, s, sp);
 }
@@ -75,53 +68,57 @@ void SpanModes::project_one(const Chain& c, const State& s, Span& sp) {
   sp.id = rec.id;
   sp.grooves = true;
   for (int i = sp.lo; i < sp.hi && sp.grooves; ++i) sp.grooves = !c.contact[i];
-  std::copy(store_.q0() + sp.lo, store_.q0() + sp.hi, q_.begin() + sp.lo);
-  std::copy(store_.p0() + sp.lo, store_.p0() + sp.hi, p_.begin() + sp.lo);
+  std::copy(store_.q0() + sp.lo, store_.q0() + sp.hi, now_.x.q.begin() + sp.lo);
+  std::copy(store_.p0() + sp.lo, store_.p0() + sp.hi, now_.x.p.begin() + sp.lo);
   const int n = sp.hi - sp.lo;
   for (int row = 0; row < n; ++row) {
     const int i = sp.lo + row;
     du_[i] = 0.0, dv_[i] = 0.0;
     if (row != 0 && row != n - 1 && s.dir[i] == 0) continue;
-    du_[i] = s.u[i] - store_.row_u(i, s.t, q_.data());
-    dv_[i] = s.v[i] - store_.row_v(i, p_.data());
+    du_[i] = s.u[i] - store_.row_u(i, s.t, now_.x.q.data());
+    dv_[i] = s.v[i] - store_.row_v(i, now_.x.p.data());
   }
 }
 
 void SpanModes::advance(double h) {
-  h_ = h;
+  end_.t = now_.t + h;
+  double* q = now_.x.q.data();
+  double* p = now_.x.p.data();
+  double* qn = end_.x.q.data();
+  double* pn = end_.x.p.data();
   for (Span& sp : spans_) {
     const RunStore::Run& rec = store_.run(sp.lo);
     const RunShape& sh = *rec.shape;
     if (h == H_ && sp.since + 1 < kSpanResync) {
-      grid_transition(sh.n, sh.p00.data(), sh.p01.data(), sh.p10.data(), sh.p11.data(), q_.data() + sp.lo,
-                      p_.data() + sp.lo, qn_.data() + sp.lo, pn_.data() + sp.lo);
+      grid_transition(sh.n, sh.p00.data(), sh.p01.data(), sh.p10.data(), sh.p11.data(), q + sp.lo, p + sp.lo,
+                      qn + sp.lo, pn + sp.lo);
       ++sp.since;
     } else {
       // A step off the grid, or the restart: from the projection itself when it is due.
-      if (h == H_) store_.coords(rec, t_ + h, qn_.data(), pn_.data());
-      else sh.evolve(q_.data() + sp.lo, p_.data() + sp.lo, h, qn_.data() + sp.lo, pn_.data() + sp.lo);
+      if (h == H_) store_.coords(rec, end_.t, qn, pn);
+      else sh.evolve(q + sp.lo, p + sp.lo, h, qn + sp.lo, pn + sp.lo);
       sp.since = 0;
     }
   }
 }
 
 void SpanModes::take(double t) {
-  std::swap(q_, qn_);
-  std::swap(p_, pn_);
-  t_ = t;
+  std::swap(now_.x, end_.x);
+  now_.t = t;
   for (Span& sp : spans_) sp.fresh = false;  // the rows have left the projected state
 }
 
 void SpanModes::take_at(double tau, double t) {
   for (const Span& sp : spans_)
-    store_.run(sp.lo).shape->evolve(q_.data() + sp.lo, p_.data() + sp.lo, tau, qn_.data() + sp.lo, pn_.data() + sp.lo);
+    store_.run(sp.lo).shape->evolve(now_.x.q.data() + sp.lo, now_.x.p.data() + sp.lo, tau, end_.x.q.data() + sp.lo,
+                                    end_.x.p.data() + sp.lo);
   take(t);
 }
 
 void SpanModes::forget() {
   for (const Span& sp : spans_)
     if (mine(sp) != nullptr) store_.drop(sp.lo);
-  t_ = std::numeric_limits<double>::quiet_NaN();
+  now_.t = std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace sb::event_detail

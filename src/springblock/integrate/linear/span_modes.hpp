@@ -49,7 +49,7 @@ class SpanModes {
   void take(double t);
   // The current state moved by tau (0 <= tau) by the closed form, at time t.
   void take_at(double tau, double t);
-  double now() const { return t_; }
+  double now() const { return now_.t; }
 
   // Write the current u, v of every run's blocks (ends_only: the two end rows of each run,
   // which are all a contact block's force reads).
@@ -71,9 +71,9 @@ class SpanModes {
   // factor 2 (x - a is then exact), and within an ulp of x otherwise (a row crossing zero), so
   // the screen may read the state instead.
   bool fresh(int i) const { return spans_[span_of_[i]].fresh; }
-  double u(int i, bool end) const { return store_.row_u(i, end ? t_ + h_ : t_, end ? qn_.data() : q_.data()) + du_[i]; }
-  double v(int i, bool end) const { return store_.row_v(i, end ? pn_.data() : p_.data()) + dv_[i]; }
-  double a(int i, bool end) const { return store_.row_a(i, end ? qn_.data() : q_.data(), end ? pn_.data() : p_.data()); }
+  double u(int i, bool end) const { return store_.row_u(i, at(end).t, at(end).x.q.data()) + du_[i]; }
+  double v(int i, bool end) const { return store_.row_v(i, at(end).x.p.data()) + dv_[i]; }
+  double a(int i, bool end) const { return store_.row_a(i, at(end).x.q.data(), at(end).x.p.data()); }
   // A bound on the order-th derivative of u of block i (order 2 to 5) from the projection on, for
   // the end rows of a run and its sliding blocks (RunStore::bound).
   double row_bound(int i, int order) const { return store_.bound(i, order); }
@@ -103,15 +103,15 @@ class SpanModes {
     return r != nullptr && r->id == sp.id ? r : nullptr;
   }
   void write_rows(const Span& sp, double* u, double* v);
+  const Moment& at(bool end) const { return end ? end_ : now_; }
 
-  int N_;
-  double H_, t_ = 0, h_ = 0;  // h_: the last advance
+  double H_;
   RunStore& store_;
   std::vector<Span> spans_, kept_;
   std::vector<BlockRange> ranges_;
-  std::vector<int> span_of_;             // block -> index in spans_ (-1: none)
-  std::vector<double> du_, dv_;          // per block: the projection's round-off (project_one)
-  std::vector<double> q_, p_, qn_, pn_;  // per mode slot (run lo + k): current and step end
+  std::vector<int> span_of_;     // block -> index in spans_ (-1: none)
+  std::vector<double> du_, dv_;  // per block: the projection's round-off (project_one)
+  Moment now_, end_;             // the runs' modes now and at the end of the last advance
 };
 
 }  // namespace sb::event_detail

@@ -7,7 +7,7 @@
 namespace sb::event_detail {
 
 void SpanModes::row_taylor(int i, double* c) const {
-  store_.taylor(i, t_, q_.data(), p_.data(), kDegree + 1, c);
+  store_.taylor(i, now_.t, now_.x.q.data(), now_.x.p.data(), kDegree + 1, c);
   c[0] += du_[i];
   c[1] += dv_[i];
 }
@@ -20,15 +20,15 @@ void SpanModes::write(double* u, double* v, bool ends_only) {
       continue;
     }
     for (int i : {sp.lo, sp.hi - 1}) {
-      u[i] = store_.row_u(i, t_, q_.data()) + du_[i];
-      v[i] = store_.row_v(i, p_.data()) + dv_[i];
+      u[i] = store_.row_u(i, now_.t, now_.x.q.data()) + du_[i];
+      v[i] = store_.row_v(i, now_.x.p.data()) + dv_[i];
     }
   }
 }
 
 // Every row of a run (RunStore::write), with its offset.
 void SpanModes::write_rows(const Span& sp, double* u, double* v) {
-  store_.write(store_.run(sp.lo), t_, q_.data(), p_.data(), u, v, false, du_.data(), dv_.data());
+  store_.write(store_.run(sp.lo), now_.t, now_.x.q.data(), now_.x.p.data(), u, v, false, du_.data(), dv_.data());
 }
 
 void SpanModes::write_near(const std::vector<int>& blocks, double* u, double* v) {
@@ -42,7 +42,8 @@ void SpanModes::write_near(const std::vector<int>& blocks, double* u, double* v)
 void SpanModes::write_untouched(const std::uint8_t* switched, double* u, double* v) {
   for (const Span& sp : spans_) {
     bool touched = false;
-    for (int i = std::max(sp.lo - 1, 0); i < std::min(sp.hi + 1, N_) && !touched; ++i) touched = switched[i] != 0;
+    const int N = static_cast<int>(span_of_.size());
+    for (int i = std::max(sp.lo - 1, 0); i < std::min(sp.hi + 1, N) && !touched; ++i) touched = switched[i] != 0;
     if (!touched && mine(sp) != nullptr) write_rows(sp, u, v);
   }
 }
