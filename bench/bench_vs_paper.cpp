@@ -7,9 +7,10 @@
 //
 // Scenes: N = 360, L_x = 7.2 cm, 1 s simulated (seconds, not t0: the goal is stated per
 // simulated second), seed 5, repetition 0, one thread, every other setting the library default.
-//   paper  NaiveRk4 (naive_rk4.hpp): RK4 at the paper's h = 1e-7 s, every step taken, written
-//          as a first implementation would be. It observes nothing (no mu(t) samples), which
-//          only makes it cheaper than the paper's runs: the ratios against it are lower bounds.
+//   paper  NaiveRk4 (naive_rk4.hpp): RK4 at the paper's h = 1e-7 s, every block at every step,
+//          written plainly (contiguous arrays, nothing allocated in the step loop). It observes
+//          nothing (no mu(t) samples), which only makes it cheaper than the paper's runs: the
+//          ratios against it are lower bounds.
 //   rk4    sb::Method::RK4 through sb::run_repetition: the same scheme with the project's
 //          kernel and its quiet-phase jump (which fires on smooth chains only: a groove block
 //          is never stuck).
@@ -88,7 +89,7 @@ void bm_library(benchmark::State& st, std::string pattern, Method m, bool timed)
 // The check below: both codes from the active state of bench_setup.hpp (a long wave that sets
 // most blocks sliding at once) on each scene's own chain, its draws and its grooves, for this
 // many steps. From rest the chain only loads for the first tenths of a second (no switch to
-// compare) and the naive code pays seconds for each of them; the active state switches from
+// compare) and the paper's method pays seconds for each of them; the active state switches from
 // the first step.
 constexpr std::int64_t kCheckSteps = 20000;
 
@@ -118,7 +119,7 @@ bool check_same_physics() {
   return ok;
 }
 
-// The paper's method costs tens of seconds a run: three repetitions of each, five of the
+// The paper's method costs 17-20 s CPU a run: three repetitions of each, five of the
 // cheap ones (their median must not be one scheduler hiccup).
 void register_all() {
   for (const char* p : kScenes) {

@@ -1,69 +1,63 @@
 #include "naive_rk4.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace sb::bench {
 namespace {
 
-// Net non-friction force on block i for the state vector y = (u_0..u_{N-1}, v_0..v_{N-1}).
-double net_force(const Chain& c, const std::vector<double>& y, int i, double t) {
-  const int N = c.N;
-  double f = c.K_s * (c.v_slider * t - y[i]) - c.m * c.gamma * y[N + i];
-  if (i > 0) f += c.K_int * (y[i - 1] - y[i]);
-  if (i + 1 < N) f += c.K_int * (y[i + 1] - y[i]);
+// The chain's constants, read once into locals: the force loops write doubles through pointers,
+// which the compiler cannot prove leave a Chain's members alone.
+struct Coefficients {
+  int N;
+  double K_s, K_int, m, m_gamma;
+};
+
+// Net non-friction force on block i (slider spring, internal springs, damping), the slider at
+// x_slider. Free chain ends: the end blocks have one neighbour.
+inline double net_force(const Coefficients& k, const double* u, const double* v, int i, double x_slider) {
+  double f = k.K_s * (x_slider - u[i]) - k.m_gamma * v[i];
+  if (i > 0) f += k.K_int * (u[i - 1] - u[i]);
+  if (i + 1 < k.N) f += k.K_int * (u[i + 1] - u[i]);
   return f;
 }
 
-// dy/dt = (v, a) with the phases of `blocks` frozen. Allocates its result, as a generic
-// ODE right-hand side usually does.
-std::vector<double> rhs(const Chain& c, const std::vector<NaiveBlock>& blocks,
-                        const std::vector<double>& y, double t) {
-  const int N = c.N;
-  std::vector<double> dy(2 * N, 0.0);
-  for (int i = 0; i < N; ++i) {
-    const NaiveBlock& b = blocks[i];
-    if (b.contact && b.dir == 0) {
-      dy[i] = 0.0;  // stuck: no velocity, no acceleration
-      dy[N + i] = 0.0;
-    } else if (!b.contact) {
-      dy[i] = y[N + i];
-      dy[N + i] = net_force(c, y, i, t) / c.m;
-    } else {
-      dy[i] = y[N + i];
-      dy[N + i] = (net_force(c, y, i, t) - b.dir * b.f_kinetic) / c.m;
+// The right-hand side at (u, v, t) with the phases `dir` frozen, into (du, dv): a stuck contact
+// block has neither velocity nor acceleration, a sliding one feels its kinetic friction against
+// its direction, a groove block no friction.
+void derivative(const Coefficients& k, const std::uint8_t* contact, const double* f_kinetic,
+                const std::int8_t* dir, const double* u, const double* v, double t, double v_slider, double* du,
+                double* dv) {
+  const double x_slider = v_slider * t;
+  for (int i = 0; i < k.N; ++i) {
+    if (contact[i] && dir[i] == 0) {
+      du[i] = 0.0;
+      dv[i] = 0.0;
+      continue;
     }
+    double f = net_force(k, u, v, i, x_slider);
+    if (contact[i]) f -= dir[i] * f_kinetic[i];
+    du[i] = v[i];
+    dv[i] = f / k.m;  // a division, as the scheme is written: multiplying by 1/m rounds differently
   }
-  return dy;
 }
 
-// y + a * k, freshly allocated.
-std::vector<double> axpy(const std::vector<double>& y, double a, const std::vector<double>& k) {
-  std::vector<double> out(y.size());
-  for (std::size_t j = 0; j < y.size(); ++j) out[j] = y[j] + a * k[j];
-  return out;
-}
-
-// The same force read from the blocks themselves, for the switching decisions.
-double net_force(const Chain& c, const std::vector<NaiveBlock>& blocks, int i, double t) {
-  double f = c.K_s * (c.v_slider * t - blocks[i].u) - c.m * c.gamma * blocks[i].v;
-  if (i > 0) f += c.K_int * (blocks[i - 1].u - blocks[i].u);
-  if (i + 1 < c.N) f += c.K_int * (blocks[i + 1].u - blocks[i].u);
-  return f;
-}
-
-void switches(const Chain& c, std::vector<NaiveBlock>& blocks, double t, State& s) {
-  for (int i = 0; i < c.N; ++i) {
-    NaiveBlock& b = blocks[i];
-    if (!b.contact) continue;
-    if (b.dir != 0 && b.v * b.dir <= 0.0) {
-      b.v = 0.0;
-      b.dir = 0;
+// The switching decisions at a step end, in block order, on the state in place.
+void switches(const Coefficients& k, const Chain& c, const double* u, double* v, std::int8_t* dir, double t,
+              State& s) {
+  const double x_slider = c.v_slider * t;
+  for (int i = 0; i < k.N; ++i) {
+    if (!c.contact[i]) continue;
+    if (dir[i] != 0 && v[i] * dir[i] <= 0.0) {
+      v[i] = 0.0;
+      dir[i] = 0;
       ++s.switches;
     }
-    if (b.dir == 0) {
-      const double F = net_force(c, blocks, i, t);
-      if (std::fabs(F) > b.f_static) {
-        b.dir = F > 0 ? 1 : -1;
+    if (dir[i] == 0) {
+      const double F = net_force(k, u, v, i, x_slider);
+      if (std::fabs(F) > c.f_static[i]) {
+        dir[i] = F > 0 ? 1 : -1;
         ++s.switches;
       }
     }
@@ -73,36 +67,55 @@ void switches(const Chain& c, std::vector<NaiveBlock>& blocks, double t, State& 
 }  // namespace
 
 void NaiveRk4::run(const Chain& c, State& s, double t_end) const {
-  const int N = c.N;
-  std::vector<NaiveBlock> blocks(N);
-  for (int i = 0; i < N; ++i)
-    blocks[i] = {s.u[i], s.v[i], s.dir[i], c.contact[i] != 0, c.f_static[i], c.f_kinetic[i]};
-  auto pack = [&] {
-    std::vector<double> y(2 * N);
-    for (int i = 0; i < N; ++i) y[i] = blocks[i].u, y[N + i] = blocks[i].v;
-    return y;
-  };
-  const double h = h_;
+  const Coefficients k{c.N, c.K_s, c.K_int, c.m, c.m * c.gamma};
+  const std::size_t N = static_cast<std::size_t>(c.N);
+  // The state is stepped in place in s; the stage state (us, vs), the current stage's
+  // derivative (ku, kv) and the weighted sum k1 + 2 k2 + 2 k3 + k4 (su, sv) are allocated here,
+  // once per run.
+  std::vector<double> us(N), vs(N), ku(N), kv(N), su(N), sv(N);
+  double* u = s.u.data();
+  double* v = s.v.data();
+  std::int8_t* dir = s.dir.data();
+  const std::uint8_t* contact = c.contact.data();
+  const double* f_kinetic = c.f_kinetic.data();
+  const double h = h_, h2 = h / 2, h6 = h / 6, vs_slider = c.v_slider;
+
   const std::int64_t n_end = std::llround(t_end / h);
   std::int64_t n = std::llround(s.t / h);
-  switches(c, blocks, n * h, s);
+  switches(k, c, u, v, dir, n * h, s);
   while (n < n_end) {
     const double t = n * h;
-    const std::vector<double> y = pack();
-    const std::vector<double> k1 = rhs(c, blocks, y, t);
-    const std::vector<double> k2 = rhs(c, blocks, axpy(y, h / 2, k1), t + h / 2);
-    const std::vector<double> k3 = rhs(c, blocks, axpy(y, h / 2, k2), t + h / 2);
-    const std::vector<double> k4 = rhs(c, blocks, axpy(y, h, k3), t + h);
-    for (int i = 0; i < N; ++i) {
-      blocks[i].u += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-      blocks[i].v += h / 6 * (k1[N + i] + 2 * k2[N + i] + 2 * k3[N + i] + k4[N + i]);
+    derivative(k, contact, f_kinetic, dir, u, v, t, vs_slider, ku.data(), kv.data());
+    for (std::size_t i = 0; i < N; ++i) {
+      su[i] = ku[i];
+      sv[i] = kv[i];
+      us[i] = u[i] + h2 * ku[i];
+      vs[i] = v[i] + h2 * kv[i];
+    }
+    derivative(k, contact, f_kinetic, dir, us.data(), vs.data(), t + h2, vs_slider, ku.data(), kv.data());
+    for (std::size_t i = 0; i < N; ++i) {
+      su[i] += 2 * ku[i];
+      sv[i] += 2 * kv[i];
+      us[i] = u[i] + h2 * ku[i];
+      vs[i] = v[i] + h2 * kv[i];
+    }
+    derivative(k, contact, f_kinetic, dir, us.data(), vs.data(), t + h2, vs_slider, ku.data(), kv.data());
+    for (std::size_t i = 0; i < N; ++i) {
+      su[i] += 2 * ku[i];
+      sv[i] += 2 * kv[i];
+      us[i] = u[i] + h * ku[i];
+      vs[i] = v[i] + h * kv[i];
+    }
+    derivative(k, contact, f_kinetic, dir, us.data(), vs.data(), t + h, vs_slider, ku.data(), kv.data());
+    for (std::size_t i = 0; i < N; ++i) {
+      u[i] += h6 * (su[i] + ku[i]);
+      v[i] += h6 * (sv[i] + kv[i]);
     }
     ++n;
     ++s.steps;
     s.rhs_evals += 4;
-    switches(c, blocks, n * h, s);
+    switches(k, c, u, v, dir, n * h, s);
   }
-  for (int i = 0; i < N; ++i) s.u[i] = blocks[i].u, s.v[i] = blocks[i].v, s.dir[i] = blocks[i].dir;
   s.t = n * h;
 }
 

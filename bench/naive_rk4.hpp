@@ -1,25 +1,23 @@
 #pragma once
-// Reference for the benchmarks: the scheme of integrate/rk4.cpp written the way a first
-// implementation would be, so the kernel's speed-up has a baseline to be measured against.
-// Same rules (phase frozen over a step; a sliding block whose velocity reaches or crosses zero
-// stops; a stuck block slips when |net non-friction force| > f_static), but: blocks as an array
-// of structs, a generic right-hand side that returns a freshly allocated derivative of the whole
-// state y = (u, v) at each stage, a branch on the phase of every block inside the force loop,
-// and no quiet-phase jump. Not for production use.
-#include <cstdint>
-#include <vector>
-
+// The paper's method as the benchmarks' yardstick: classical fourth-order Runge-Kutta at a fixed
+// step h, every block at every stage of every step (a stuck block's slope is set to zero there,
+// as the rules below say, not skipped), written plainly and well, so that a speed-up measured
+// against it is the method's and not the price of a careless implementation.
+// The state and the stage buffers are contiguous arrays allocated once per run; nothing is
+// allocated in the step loop. The rules are sb::Rk4's (integrate/methods/rk4.cpp): the phase of
+// every block is frozen over a step; at each step end a sliding block whose velocity reached or
+// crossed zero stops, and a stuck block slips when |net non-friction force| > f_static. What
+// sb::Rk4 adds and this leaves out, being the project's engineering rather than the paper's
+// method: the quiet-phase jump, the compile-time effect specialisations, a branch-free force
+// kernel with AVX2 clones, and a screen that skips the switching rules on steps where no block
+// can switch.
+// tests/unit/test_naive_rk4.cpp holds it to the same doubles as a version with an array of
+// structs that allocates at every stage; bench_vs_paper and bench_rk4_kernel check it against
+// sb::Rk4 to round-off before timing it.
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
 
 namespace sb::bench {
-
-struct NaiveBlock {
-  double u = 0, v = 0;
-  std::int8_t dir = 0;  // 0 = stuck or free, +1/-1 = sliding direction
-  bool contact = true;
-  double f_static = 0, f_kinetic = 0;
-};
 
 class NaiveRk4 {
  public:

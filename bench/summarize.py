@@ -2,7 +2,8 @@
 """Print the benchmark table from Google Benchmark JSON files (bench-report runs this).
 
 Kernel cases: ns per block per step (median over repetitions) and the speed-ups of sb::Rk4
-over the naive reference and of each effect specialisation over the full kernel. Ratios come
+over the plain RK4 of bench/naive_rk4.cpp (the paper's method, run names rk4/naive/...) and of
+each effect specialisation over the full kernel. Ratios come
 from one run with interleaved repetitions, so machine load affects both sides alike.
 """
 import json
@@ -138,7 +139,7 @@ def reproduction_table(path):
 # skips the loading, so no goal is set there, but the ratio is printed).
 VS_PAPER_GOALS = {("smooth", "paper_rk4"): 1000, ("periodic:10,10", "paper_rk4"): 1000,
                   ("periodic:10,10", "rk4"): 300}
-VS_PAPER_AGAINST = (("paper_rk4", "the paper's method (naive RK4, h = 1e-7 s)"), ("rk4", "the project's RK4"))
+VS_PAPER_AGAINST = (("paper_rk4", "the paper's method (plain RK4, h = 1e-7 s)"), ("rk4", "the project's RK4"))
 
 
 def in_seconds(path, runs):
@@ -157,10 +158,8 @@ def vs_paper_ratios(path):
     goal (None where the issue sets none) and whether it is met; the wall-clock ratio too.
     CPU time decides: the runs are single-threaded and the machine is shared, so another user's
     load stretches wall time but not the work done. The event method's median repetition is set
-    against the other side's fastest one, which keeps the ratio a lower bound: the paper's method
-    allocates its state at every stage, and its time depends on the allocator's state that the
-    benchmarks interleaved with it leave (periodic:10,10 measured 37.4, 37.0 and 37.9 s run alone,
-    38.6, 49.5 and 56.0 s interleaved). Shared with tools/readme_cost.py."""
+    against the other side's fastest one, which keeps the ratio a lower bound: the event method's
+    time is a typical one, the other side's the least it took. Shared with tools/readme_cost.py."""
     typical, best = in_seconds(path, medians(path)), in_seconds(path, fastest(path))
     out = []
     for sc in sorted({n.split("/")[1] for n in typical if n.startswith("vs_paper/")}):
