@@ -41,7 +41,6 @@ CLASSES_TO_SPLIT = {
     "sb::event_detail::EdgeMarch",
     "sb::event_detail::EventRun",
     "sb::event_detail::QuietPhase",
-    "sb::event_detail::RunShape",
 }
 # Where the function limit applies: the library and the two command-line shells.
 FUNCTION_ROOTS = ["src", "reproduce"]

@@ -45,14 +45,14 @@ TEST(RunShape, ModesDiagonaliseEveryShape) {
         SCOPED_TRACE("n = " + std::to_string(n) + " left " + std::to_string(left) + " right " + std::to_string(right));
         const RunShape& b = shapes.get(n, left, right);
         const Eigen::MatrixXd K = model_stiffness(c, n, left, right);
-        EXPECT_EQ((b.stiffness() - K).cwiseAbs().maxCoeff(), 0.0);
+        EXPECT_EQ((b.K.dense() - K).cwiseAbs().maxCoeff(), 0.0);
         const double scale = c.K_s + 4.0 * c.K_int;
-        const Eigen::MatrixXd residual = K * b.Q - b.Q * vec(b.lambda).asDiagonal();
+        const Eigen::MatrixXd residual = K * b.Q - b.Q * vec(b.spectrum.lambda).asDiagonal();
         EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-13 * scale);
         const Eigen::MatrixXd gram = b.Q.transpose() * b.Q - Eigen::MatrixXd::Identity(n, n);
         EXPECT_LT(gram.cwiseAbs().maxCoeff(), 1e-13);
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K);
-        for (int k = 0; k < n; ++k) EXPECT_NEAR(b.lambda[k], es.eigenvalues()[k], 1e-13 * scale) << "mode " << k;
+        for (int k = 0; k < n; ++k) EXPECT_NEAR(b.spectrum.lambda[k], es.eigenvalues()[k], 1e-13 * scale) << "mode " << k;
         // The rows the stores and searches read are Q's rows.
         for (int r = 0; r < n; ++r)
           for (int k = 0; k < n; ++k) ASSERT_EQ(b.row(r)[k], b.Q(r, k));
@@ -70,18 +70,18 @@ TEST(RunShape, FactorsAndAffinePiecesSolveTheirEquations) {
         const Eigen::MatrixXd K = model_stiffness(c, n, left, right);
         const Eigen::VectorXd f = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
         Eigen::VectorXd y(n);
-        b.solve(f.data(), y.data());
+        b.K.solve(f.data(), y.data());
         EXPECT_LT((K * y - f).cwiseAbs().maxCoeff(), 1e-12 * f.cwiseAbs().maxCoeff());
         // K B = K_s v 1, K a0 = -m gamma B, K gL = K_int e_1 (held left), K gR = K_int e_n.
         const double v = c.K_s * c.v_slider;
-        EXPECT_LT((K * vec(b.B) - Eigen::VectorXd::Constant(n, v)).cwiseAbs().maxCoeff(), 1e-12 * v);
-        const Eigen::VectorXd ma = -c.m * c.gamma * vec(b.B);
-        EXPECT_LT((K * vec(b.a0) - ma).cwiseAbs().maxCoeff(), 1e-12 * ma.cwiseAbs().maxCoeff());
+        EXPECT_LT((K * vec(b.path.B) - Eigen::VectorXd::Constant(n, v)).cwiseAbs().maxCoeff(), 1e-12 * v);
+        const Eigen::VectorXd ma = -c.m * c.gamma * vec(b.path.B);
+        EXPECT_LT((K * vec(b.path.a0) - ma).cwiseAbs().maxCoeff(), 1e-12 * ma.cwiseAbs().maxCoeff());
         Eigen::VectorXd eL = Eigen::VectorXd::Zero(n), eR = Eigen::VectorXd::Zero(n);
         if (left) eL[0] = c.K_int;
         if (right) eR[n - 1] = c.K_int;
-        EXPECT_LT((K * vec(b.gL) - eL).cwiseAbs().maxCoeff(), 1e-12 * c.K_int);
-        EXPECT_LT((K * vec(b.gR) - eR).cwiseAbs().maxCoeff(), 1e-12 * c.K_int);
+        EXPECT_LT((K * vec(b.path.gL) - eL).cwiseAbs().maxCoeff(), 1e-12 * c.K_int);
+        EXPECT_LT((K * vec(b.path.gR) - eR).cwiseAbs().maxCoeff(), 1e-12 * c.K_int);
       }
 }
 
@@ -91,11 +91,11 @@ TEST(RunShape, TheResidualTestSeesAWrongEnd) {
   RunShapes shapes(c);
   const RunShape& b = shapes.get(10, true, false);
   const Eigen::MatrixXd K = model_stiffness(c, 10, true, true);
-  const Eigen::MatrixXd residual = K * b.Q - b.Q * vec(b.lambda).asDiagonal();
+  const Eigen::MatrixXd residual = K * b.Q - b.Q * vec(b.spectrum.lambda).asDiagonal();
   EXPECT_GT(residual.cwiseAbs().maxCoeff(), 1e-3 * c.K_int);
   Eigen::VectorXd y(10);
   const Eigen::VectorXd f = Eigen::VectorXd::Ones(10);
-  b.solve(f.data(), y.data());
+  b.K.solve(f.data(), y.data());
   EXPECT_GT((K * y - f).cwiseAbs().maxCoeff(), 1e-3);
 }
 

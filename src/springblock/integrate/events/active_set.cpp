@@ -52,9 +52,9 @@ bool ActiveSet::settled_now(const State& s, BlockRange r) const {
   const double uL = sh.left ? s.u[r.lo - 1] : 0.0, uR = sh.right ? s.u[r.hi] : 0.0;
   for (int k = 0; k < r.size(); ++k) {
     const int i = r.lo + k;
-    const double A = sh.a0[k] + uL * sh.gL[k] + uR * sh.gR[k];
-    if (std::fabs(s.u[i] - (A + sh.B[k] * s.t)) > eps_u_) return false;
-    if (std::fabs(s.v[i] - sh.B[k]) > eps_v_) return false;
+    const double A = sh.path.a0[k] + uL * sh.path.gL[k] + uR * sh.path.gR[k];
+    if (std::fabs(s.u[i] - (A + sh.path.B[k] * s.t)) > eps_u_) return false;
+    if (std::fabs(s.v[i] - sh.path.B[k]) > eps_v_) return false;
   }
   return true;
 }

@@ -57,7 +57,7 @@ inline double row_deviation_bound(const RunShape& b, int row, const double* q0, 
   double a = 0;
   const double* Q = b.row(row);
   for (int k = 0; k < b.n; ++k) {
-    const double w2 = b.w2[k];
+    const double w2 = b.spectrum.w2[k];
     a += std::fabs(Q[k]) * std::sqrt((p0[k] * p0[k] + w2 * q0[k] * q0[k]) / w2);
   }
   return a;
@@ -65,7 +65,7 @@ inline double row_deviation_bound(const RunShape& b, int row, const double* q0, 
 inline double row_deviation_bound(const RunShape& b, int row, const double* sE) {
   double a = 0;
   const double* Q = b.row(row);
-  for (int k = 0; k < b.n; ++k) a += std::fabs(Q[k]) * sE[k] * b.inv_omega[k];
+  for (int k = 0; k < b.n; ++k) a += std::fabs(Q[k]) * sE[k] * b.spectrum.inv_omega[k];
   return a;
 }
 
@@ -76,7 +76,7 @@ inline void row_derivative_bounds(const RunShape& b, int row, const double* sE, 
   const double* Q = b.row(row);
   for (int k = 0; k < b.n; ++k) {
     const double w = std::fabs(Q[k]) * sE[k];
-    for (int j = 0; j < 4; ++j) d[j] += w * b.c[j][k];
+    for (int j = 0; j < 4; ++j) d[j] += w * b.spectrum.c[j][k];
   }
   for (int j = 0; j < 4; ++j) out[j] = d[j];
 }

@@ -22,7 +22,7 @@ ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, boo
     const DampedMode& m = sh.modes[k];
     velocity_.q[slot] = scratch_.p[slot];
     velocity_.p[slot] = -c.gamma * scratch_.p[slot] - m.omega2 * scratch_.q[slot];
-    march_.add_mode(-dir * row[k], m, slot, sh.march[k].data());
+    march_.add_mode(-dir * row[k], m, slot, sh.steps.march[k].data());
   }
   const double v = store_.row_v(i, scratch_.p.data());
   march_.finish(store_.shapes().march_step());
@@ -75,7 +75,7 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
     scratch_at(r, s.t);
     a += K_int_ * (store_.path_u(nb, s.t) - s.u[j]);
     b += K_int_ * store_.B(nb);
-    for (int k = 0; k < r.hi - r.lo; ++k) march_.add_mode(K_int_ * row[k], sh.modes[k], r.lo + k, sh.march[k].data());
+    for (int k = 0; k < r.hi - r.lo; ++k) march_.add_mode(K_int_ * row[k], sh.modes[k], r.lo + k, sh.steps.march[k].data());
   }
   march_.finish(store_.shapes().march_step());
   march_.set_affine(a, b);

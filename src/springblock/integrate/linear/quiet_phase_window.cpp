@@ -49,7 +49,7 @@ bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
     if (!(tau0 <= s.sample_dead_tau)) continue;
     const RunShape& d = *s.shape;
     for (int k = 0; need_sums && k < s.n; ++k)
-      if (std::isnan(d.sample_sum[k][0])) return false;  // no closed-form sum for this mode
+      if (std::isnan(d.steps.sample_sum[k][0])) return false;  // no closed-form sum for this mode
     double* q = wq_.data() + s.first;
     double* p = wp_.data() + s.first;
     d.evolve(store_.q0() + s.first, store_.p0() + s.first, tau0, q, p);
@@ -101,7 +101,7 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
     const double* last_row = d.row(s.n - 1);
     double first = 0, last = 0;
     for (int k = 0; k < s.n; ++k) {
-      const double Sq = d.sample_sum[k][0] * (q[k] - q1[k]) + d.sample_sum[k][1] * (p[k] - p1[k]);
+      const double Sq = d.steps.sample_sum[k][0] * (q[k] - q1[k]) + d.steps.sample_sum[k][1] * (p[k] - p1[k]);
       first += first_row[k] * Sq, last += last_row[k] * Sq;
     }
     end_dots_[2 * sgi] = first, end_dots_[2 * sgi + 1] = last;

@@ -72,28 +72,29 @@ void cached_modes(double K_s, double K_int, int n, bool left, bool right, Eigen:
   lambda = it->second.lambda;
 }
 
-// K's symmetric tridiagonal elimination (Thomas' algorithm: K is diagonally dominant, so no
-// pivoting is needed). Written here rather than taken from GSL, whose tridiagonal solver
-// factors K again for every right-hand side: a projection solves one per run.
-void factor(RunShape& sh) {
-  const int n = sh.n;
-  sh.inv_pivot.resize(n);
-  sh.upper.assign(n, 0.0);
+}  // namespace
+
+void Factors::factor() {
+  const int n = static_cast<int>(diag.size());
+  inv_pivot.resize(n);
+  upper.assign(n, 0.0);
   for (int k = 0; k < n; ++k) {
-    const double pivot = k == 0 ? sh.diag[0] : sh.diag[k] - sh.off[k - 1] * sh.upper[k - 1];
-    sh.inv_pivot[k] = 1.0 / pivot;
-    if (k + 1 < n) sh.upper[k] = sh.off[k] / pivot;
+    const double pivot = k == 0 ? diag[0] : diag[k] - off[k - 1] * upper[k - 1];
+    inv_pivot[k] = 1.0 / pivot;
+    if (k + 1 < n) upper[k] = off[k] / pivot;
   }
 }
 
-}  // namespace
-
-void RunShape::solve(const double* f, double* y) const {
+// Written here rather than taken from GSL, whose tridiagonal solver factors K again for every
+// right-hand side: a projection solves one per run.
+void Factors::solve(const double* f, double* y) const {
+  const int n = static_cast<int>(diag.size());
   for (int r = 0; r < n; ++r) y[r] = (r == 0 ? f[0] : f[r] - off[r - 1] * y[r - 1]) * inv_pivot[r];
   for (int r = n - 2; r >= 0; --r) y[r] -= upper[r] * y[r + 1];
 }
 
-Eigen::MatrixXd RunShape::stiffness() const {
+Eigen::MatrixXd Factors::dense() const {
+  const int n = static_cast<int>(diag.size());
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
   for (int r = 0; r < n; ++r) {
     K(r, r) = diag[r];
@@ -116,7 +117,7 @@ const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts)
   if (slot >= index_.size()) index_.resize(slot + 1, nullptr);
   if (index_[slot] == nullptr) index_[slot] = &shapes_.emplace(std::make_tuple(n, left, right), make(n, left, right)).first->second;
   RunShape& sh = *index_[slot];
-  if ((sh.parts & parts) != parts) add_parts(sh, parts);
+  if ((sh.steps.parts & parts) != parts) add_parts(sh, parts);
   return sh;
 }
 
@@ -124,32 +125,35 @@ RunShape RunShapes::make(int n, bool left, bool right) const {
   const double K_s = c_.K_s, K_int = c_.K_int, mass = c_.m, gamma = c_.gamma;
   RunShape sh;
   sh.n = n, sh.left = left, sh.right = right;
-  for (int k = 0; k < n; ++k) sh.diag.push_back(K_s + ((k > 0 || left) ? K_int : 0.0) + ((k + 1 < n || right) ? K_int : 0.0));
-  sh.off.assign(std::max(n - 1, 0), -K_int);
-  factor(sh);
+  Factors& K = sh.K;
+  for (int k = 0; k < n; ++k) K.diag.push_back(K_s + ((k > 0 || left) ? K_int : 0.0) + ((k + 1 < n || right) ? K_int : 0.0));
+  K.off.assign(std::max(n - 1, 0), -K_int);
+  K.factor();
   // The affine path's pieces, each K^-1 of its forcing.
-  sh.B.assign(n, K_s * c_.v_slider);
-  sh.solve(sh.B.data(), sh.B.data());
-  sh.a0.resize(n), sh.gL.assign(n, 0.0), sh.gR.assign(n, 0.0);
-  for (int k = 0; k < n; ++k) sh.a0[k] = -mass * gamma * sh.B[k];
-  sh.solve(sh.a0.data(), sh.a0.data());
-  if (left) sh.gL[0] = K_int, sh.solve(sh.gL.data(), sh.gL.data());
-  if (right) sh.gR[n - 1] = K_int, sh.solve(sh.gR.data(), sh.gR.data());
+  AffinePieces& path = sh.path;
+  path.B.assign(n, K_s * c_.v_slider);
+  K.solve(path.B.data(), path.B.data());
+  path.a0.resize(n), path.gL.assign(n, 0.0), path.gR.assign(n, 0.0);
+  for (int k = 0; k < n; ++k) path.a0[k] = -mass * gamma * path.B[k];
+  K.solve(path.a0.data(), path.a0.data());
+  if (left) path.gL[0] = K_int, K.solve(path.gL.data(), path.gL.data());
+  if (right) path.gR[n - 1] = K_int, K.solve(path.gR.data(), path.gR.data());
   // The modes and the constants of the derivative bounds: from q'' = -gamma q' - omega^2 q and
   // omega |q| <= sqrt(E), |q''| <= (gamma + omega) sqrt(E) and q^(j+2) = -gamma q^(j+1) -
   // omega^2 q^(j) for the higher ones.
-  cached_modes(K_s, K_int, n, left, right, sh.Q, sh.lambda);
+  Spectrum& sp = sh.spectrum;
+  cached_modes(K_s, K_int, n, left, right, sh.Q, sp.lambda);
   sh.Qr.resize(static_cast<std::size_t>(n) * n);
   for (int r = 0; r < n; ++r)
     for (int k = 0; k < n; ++k) sh.Qr[static_cast<std::size_t>(r) * n + k] = sh.Q(r, k);
   for (int k = 0; k < n; ++k) {
-    const DampedMode m(0.5 * gamma, sh.lambda[k] / mass);
+    const DampedMode m(0.5 * gamma, sp.lambda[k] / mass);
     sh.modes.push_back(m);
-    sh.w2.push_back(m.omega2);
-    sh.inv_omega.push_back(1.0 / m.omega);
+    sp.w2.push_back(m.omega2);
+    sp.inv_omega.push_back(1.0 / m.omega);
     const double c2 = gamma + m.omega, c3 = gamma * c2 + m.omega2;
     const double c4 = gamma * c3 + m.omega2 * c2, c5 = gamma * c4 + m.omega2 * c3;
-    sh.c[0].push_back(c2), sh.c[1].push_back(c3), sh.c[2].push_back(c4), sh.c[3].push_back(c5);
+    sp.c[0].push_back(c2), sp.c[1].push_back(c3), sp.c[2].push_back(c4), sp.c[3].push_back(c5);
   }
   return sh;
 }
@@ -158,27 +162,29 @@ RunShape RunShapes::make(int n, bool left, bool right) const {
 // its users ask for: the exact stepper's runs the grid step's, the modal runs EdgeMarch's and
 // the sample spacing's, the quiet phase's segments the sample spacing's.
 void RunShapes::add_parts(RunShape& sh, std::uint8_t parts) const {
-  const std::uint8_t missing = parts & ~sh.parts;
+  Transitions& st = sh.steps;
+  const std::uint8_t missing = parts & ~st.parts;
   for (const DampedMode& m : sh.modes) {
     if (missing & RunShape::kStep) {
       const Transition P = m.transition(step_);
-      sh.p00.push_back(P[0]), sh.p01.push_back(P[1]), sh.p10.push_back(P[2]), sh.p11.push_back(P[3]);
+      st.p00.push_back(P[0]), st.p01.push_back(P[1]), st.p10.push_back(P[2]), st.p11.push_back(P[3]);
     }
-    if (missing & RunShape::kMarch) sh.march.push_back(m.transition(march_step_));
+    if (missing & RunShape::kMarch) st.march.push_back(m.transition(march_step_));
   }
-  sh.parts |= missing;
+  st.parts |= missing;
   if ((missing & RunShape::kSample) && sample_dt_ > 0) set_sample_transitions(sh);
 }
 
 void RunShapes::set_sample_transitions(RunShape& sh) const {
-  sh.sample.clear();
-  sh.sample_sum.clear();
+  Transitions& st = sh.steps;
+  st.sample.clear();
+  st.sample_sum.clear();
   for (const DampedMode& m : sh.modes) {
     const Transition P = m.transition(sample_dt_);
-    sh.sample.push_back(P);
+    st.sample.push_back(P);
     const double det = (1.0 - P[0]) * (1.0 - P[3]) - P[1] * P[2];
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    sh.sample_sum.push_back(std::fabs(det) < 1e-6 ? std::array<double, 2>{nan, nan}
+    st.sample_sum.push_back(std::fabs(det) < 1e-6 ? std::array<double, 2>{nan, nan}
                                                   : std::array<double, 2>{(1.0 - P[3]) / det, P[1] / det});
   }
 }
@@ -186,7 +192,7 @@ void RunShapes::set_sample_transitions(RunShape& sh) const {
 void RunShapes::set_sample_dt(double dt) {
   sample_dt_ = dt;
   for (auto& [key, sh] : shapes_)
-    if (sh.parts & RunShape::kSample) set_sample_transitions(sh);
+    if (sh.steps.parts & RunShape::kSample) set_sample_transitions(sh);
 }
 
 }  // namespace sb::event_detail

@@ -35,30 +35,54 @@
 
 namespace sb::event_detail {
 
+// K's symmetric tridiagonal elimination (Thomas' algorithm: K is diagonally dominant, so no
+// pivoting is needed): K^-1 of any right-hand side in O(n).
+struct Factors {
+  std::vector<double> diag, off;         // K: diagonal, and the n - 1 entries beside it
+  std::vector<double> inv_pivot, upper;  // 1 / pivot_r, and off_r / pivot_r
+  void factor();
+  // y = K^-1 f (y may be f).
+  void solve(const double* f, double* y) const;
+  // The dense K (checks and diagnostics).
+  Eigen::MatrixXd dense() const;
+};
+
+// The affine path's pieces: B, and A = a0 + u_left gL + u_right gR - K^-1 f_kin.
+struct AffinePieces {
+  std::vector<double> B, a0, gL, gR;
+};
+
+// Per mode: K's eigenvalue, omega^2, 1 / omega, and the bounds' constants: |q^(j)| <= c[j - 2]
+// sqrt(E), j = 2 .. 5, for a mode of energy E = q'^2 + omega^2 q^2.
+struct Spectrum {
+  std::vector<double> lambda, w2, inv_omega;
+  std::vector<double> c[4];
+};
+
+// Per mode, its exact transitions over the steps its users take, made as they ask (Parts).
+struct Transitions {
+  std::uint8_t parts = 0;  // those made so far
+  // Over the sample spacing, and the first row of (I - P)^-1 for the sum of a mode over
+  // consecutive samples in closed form (NaN where I - P is too near singular: an undamped mode
+  // that turns by a multiple of 2 pi).
+  std::vector<Transition> sample;
+  std::vector<std::array<double, 2>> sample_sum;
+  std::vector<double> p00, p01, p10, p11;  // over the exact stepper's grid step, by element
+  std::vector<Transition> march;           // over EdgeMarch's grid step
+};
+
 struct RunShape {
   // The transitions a shape carries once a user has asked for them.
   enum Parts : std::uint8_t { kStep = 1, kMarch = 2, kSample = 4 };
   int n = 0;
-  std::uint8_t parts = 0;  // those made so far
   bool left = false, right = false;  // held by a stuck block at that end (else a free chain end)
-  std::vector<double> diag, off;     // K: diagonal, and the n - 1 entries beside it
-  std::vector<double> inv_pivot, upper;  // K's elimination: 1 / pivot_r, and -off_r / pivot_r
-  std::vector<double> B, a0, gL, gR;     // the affine path's pieces (above)
-  Eigen::MatrixXd Q;                     // modes by column, orthonormal, eigenvalues rising
-  std::vector<double> Qr;                // the same by row
-  std::vector<double> lambda;            // eigenvalues of K (stiffnesses of the modes)
-  std::vector<DampedMode> modes;         // alpha = gamma / 2, omega^2 = lambda / m
-  std::vector<double> w2;                // omega^2 per mode, contiguous
-  std::vector<double> inv_omega;         // 1 / omega per mode
-  // Per mode, bounds on |q^(j)| per sqrt of its energy q'^2 + omega^2 q^2, j = 2 .. 5 (c[j - 2]).
-  std::vector<double> c[4];
-  // Per mode: the transition over the sample spacing, and the first row of (I - P)^-1 for the
-  // sum of a mode over consecutive samples in closed form (NaN where I - P is too near singular:
-  // an undamped mode that turns by a multiple of 2 pi).
-  std::vector<Transition> sample;
-  std::vector<std::array<double, 2>> sample_sum;
-  std::vector<double> p00, p01, p10, p11;  // per mode: transition over the exact stepper's step
-  std::vector<Transition> march;           // per mode: transition over EdgeMarch's grid step
+  Factors K;
+  AffinePieces path;
+  Eigen::MatrixXd Q;               // modes by column, orthonormal, eigenvalues rising
+  std::vector<double> Qr;          // the same by row
+  std::vector<DampedMode> modes;   // alpha = gamma / 2, omega^2 = lambda / m
+  Spectrum spectrum;
+  Transitions steps;
 
   const double* row(int r) const { return Qr.data() + static_cast<std::size_t>(r) * n; }
   // Modes k0 .. k0 + m - 1 (every mode by default) from (q, p) moved on by tau >= 0 in closed
@@ -68,15 +92,11 @@ struct RunShape {
         m < 0 ? n : m, [&](int k) -> const DampedMode& { return modes[k0 + k]; }, tau,
         [&](int k, const DampedMode& md, double e) { md.eval_decayed(q[k], p[k], tau, e, qo[k], po[k]); });
   }
-  // y = K^-1 f (y may be f).
-  void solve(const double* f, double* y) const;
-  // The dense K (checks and diagnostics).
-  Eigen::MatrixXd stiffness() const;
   // The modes (q, q') one sample spacing on.
   void step_sample(double* q, double* qd) const {
     for (int k = 0; k < n; ++k) {
       const double a = q[k], b = qd[k];
-      const Transition& P = sample[k];
+      const Transition& P = steps.sample[k];
       q[k] = P[0] * a + P[1] * b;
       qd[k] = P[2] * a + P[3] * b;
     }

@@ -88,15 +88,15 @@ void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::in
   const int lo = run.lo, n = run.n();
   const double uL = sh.left ? u[lo - 1] : 0.0, uR = sh.right ? u[run.hi] : 0.0;
   for (int k = 0; k < n; ++k) {
-    A_[lo + k] = sh.a0[k] + uL * sh.gL[k] + uR * sh.gR[k];
-    B_[lo + k] = sh.B[k];
+    A_[lo + k] = sh.path.a0[k] + uL * sh.path.gL[k] + uR * sh.path.gR[k];
+    B_[lo + k] = sh.path.B[k];
   }
   bool friction = false;
   for (int k = 0; k < n && !friction; ++k) friction = dir[lo + k] != 0;
   if (!friction) return;
   double* f = dev_.q.data();
   for (int k = 0; k < n; ++k) f[k] = dir[lo + k] * c.f_kinetic[lo + k];
-  sh.solve(f, f);
+  sh.K.solve(f, f);
   for (int k = 0; k < n; ++k) A_[lo + k] -= f[k];
 }
 
@@ -121,7 +121,7 @@ const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, c
     rows_times(n, run.shape->Qr.data(), x, y, modes_.q.data() + lo, modes_.p.data() + lo);
     for (int k = 0; k < n; ++k) {
       const double qk = modes_.q[lo + k], pk = modes_.p[lo + k];
-      sE_[lo + k] = std::sqrt(pk * pk + run.shape->w2[k] * qk * qk);
+      sE_[lo + k] = std::sqrt(pk * pk + run.shape->spectrum.w2[k] * qk * qk);
     }
   }
   set_bounds(run, dir);
@@ -185,7 +185,7 @@ double RunStore::row_a(int i, const double* q, const double* p) const {
   const Run& r = records_.run(i);
   const int n = r.n();
   const double* row = r.shape->row(i - r.lo);
-  const double* w2 = r.shape->w2.data();
+  const double* w2 = r.shape->spectrum.w2.data();
   double d = 0;
   for (int k = 0; k < n; ++k) d += row[k] * (-gamma_ * p[r.lo + k] - w2[k] * q[r.lo + k]);
   return d;
@@ -229,7 +229,7 @@ void RunStore::taylor(int i, double t, const double* q, const double* p, int deg
   c[0] = path_u(i, t);
   c[1] = B_[i];
   for (int j = 2; j <= deg; ++j) c[j] = 0.0;
-  for (int k = 0; k < r.n(); ++k) add_taylor(row[k], q[r.lo + k], p[r.lo + k], gamma_, r.shape->w2[k], deg, c);
+  for (int k = 0; k < r.n(); ++k) add_taylor(row[k], q[r.lo + k], p[r.lo + k], gamma_, r.shape->spectrum.w2[k], deg, c);
   taylor_scale(deg, c);
 }
 

@@ -90,7 +90,7 @@ void SpanModes::advance(double h) {
     const RunStore::Run& rec = store_.run(sp.lo);
     const RunShape& sh = *rec.shape;
     if (h == H_ && sp.since + 1 < kSpanResync) {
-      grid_transition(sh.n, sh.p00.data(), sh.p01.data(), sh.p10.data(), sh.p11.data(), q + sp.lo, p + sp.lo,
+      grid_transition(sh.n, sh.steps.p00.data(), sh.steps.p01.data(), sh.steps.p10.data(), sh.steps.p11.data(), q + sp.lo, p + sp.lo,
                       qn + sp.lo, pn + sp.lo);
       ++sp.since;
     } else {
