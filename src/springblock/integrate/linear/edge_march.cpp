@@ -34,20 +34,20 @@ void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
 double EdgeMarch::grid_step(double omega_max) { return kGrid / omega_max; }
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const double* P) {
-  modes_.push_back({mode.omega + 2.0 * mode.alpha, mode.fastest_rate(), mode, index});
-  w_.push_back(w);
-  p00_.push_back(P[0]), p01_.push_back(P[1]), p10_.push_back(P[2]), p11_.push_back(P[3]);
+  sum_.modes.push_back({mode.omega + 2.0 * mode.alpha, mode.fastest_rate(), mode, index});
+  sum_.w.push_back(w);
+  sum_.p00.push_back(P[0]), sum_.p01.push_back(P[1]), sum_.p10.push_back(P[2]), sum_.p11.push_back(P[3]);
 }
 
 void EdgeMarch::finish(double H) {
   H_ = H;
-  for (auto* v : {&q_, &qd_, &qn_, &qdn_, &qs_, &qds_}) v->resize(modes_.size());
-  taylor_ok_ = true;
-  for (const Mode& m : modes_) taylor_ok_ = taylor_ok_ && m.rate * H_ <= kTaylorReach;
+  for (auto* v : {&now_.q, &now_.p, &next_.q, &next_.p, &scratch_.q, &scratch_.p}) v->resize(sum_.modes.size());
+  poly_.ok = true;
+  for (const Mode& m : sum_.modes) poly_.ok = poly_.ok && m.rate * H_ <= kTaylorReach;
 }
 
 double EdgeMarch::affine_reach(double a, double b, double fs) const {
-  if (sense_ == Sense::Abs) {
+  if (gap_.sense == Sense::Abs) {
     if (b == 0.0) return kInf;
     return std::max(((b > 0 ? fs : -fs) - a) / b, 0.0);
   }
@@ -56,23 +56,22 @@ double EdgeMarch::affine_reach(double a, double b, double fs) const {
 
 void EdgeMarch::finish() {
   double omega_max = 0;
-  for (const Mode& m : modes_) omega_max = std::max(omega_max, m.mode.omega);
+  for (const Mode& m : sum_.modes) omega_max = std::max(omega_max, m.mode.omega);
   H_ = kGrid / omega_max;
-  for (std::size_t k = 0; k < modes_.size(); ++k) {
-    modes_[k].mode.eval(1.0, 0.0, H_, p00_[k], p10_[k]);
-    modes_[k].mode.eval(0.0, 1.0, H_, p01_[k], p11_[k]);
+  for (std::size_t k = 0; k < sum_.modes.size(); ++k) {
+    sum_.modes[k].mode.eval(1.0, 0.0, H_, sum_.p00[k], sum_.p10[k]);
+    sum_.modes[k].mode.eval(0.0, 1.0, H_, sum_.p01[k], sum_.p11[k]);
   }
-  for (auto* v : {&q_, &qd_, &qn_, &qdn_, &qs_, &qds_}) v->assign(modes_.size(), 0.0);
-  taylor_ok_ = true;
-  for (const Mode& m : modes_) taylor_ok_ = taylor_ok_ && m.rate * H_ <= kTaylorReach;
+  for (auto* v : {&now_.q, &now_.p, &next_.q, &next_.p, &scratch_.q, &scratch_.p}) v->assign(sum_.modes.size(), 0.0);
+  poly_.ok = true;
+  for (const Mode& m : sum_.modes) poly_.ok = poly_.ok && m.rate * H_ <= kTaylorReach;
 }
 
 void EdgeMarch::direct(const double* q0, const double* p0, double tau, double* q, double* qd) {
-  ++direct_evals;
   DampedMode::eval_all(
-      static_cast<int>(modes_.size()), [&](int k) -> const DampedMode& { return modes_[k].mode; }, tau,
+      static_cast<int>(sum_.modes.size()), [&](int k) -> const DampedMode& { return sum_.modes[k].mode; }, tau,
       [&](int k, const DampedMode& m, double e) {
-        m.eval_decayed(q0[modes_[k].index], p0[modes_[k].index], tau, e, q[k], qd[k]);
+        m.eval_decayed(q0[sum_.modes[k].index], p0[sum_.modes[k].index], tau, e, q[k], qd[k]);
       });
 }
 
@@ -90,9 +89,8 @@ SB_KERNEL_CLONES void transition(int n, const double* __restrict p00, const doub
 }  // namespace
 
 void EdgeMarch::grid_step() {
-  ++grid_steps;
-  transition(static_cast<int>(modes_.size()), p00_.data(), p01_.data(), p10_.data(), p11_.data(), q_.data(),
-             qd_.data(), qn_.data(), qdn_.data());
+  transition(static_cast<int>(sum_.modes.size()), sum_.p00.data(), sum_.p01.data(), sum_.p10.data(), sum_.p11.data(), now_.q.data(),
+             now_.p.data(), next_.q.data(), next_.p.data());
 }
 
 // The modes' weighted sum, sum_k w_k x_k, in four lanes (mode k in lane k % 4, the lanes added
@@ -100,8 +98,8 @@ void EdgeMarch::grid_step() {
 // at every grid step. F and F' are always summed this way (force_at, gap, expand), so the local
 // polynomial at its base is F there to the last bit.
 double EdgeMarch::weighted(const double* x) const {
-  const double* w = w_.data();
-  const int n = static_cast<int>(modes_.size());
+  const double* w = sum_.w.data();
+  const int n = static_cast<int>(sum_.modes.size());
   double d[4] = {};
   int k = 0;
   for (; k + 4 <= n; k += 4)
@@ -110,14 +108,14 @@ double EdgeMarch::weighted(const double* x) const {
   return (d[0] + d[1]) + (d[2] + d[3]);
 }
 
-double EdgeMarch::force_at(double tau, const double* q) const { return (a_ + b_ * tau) + weighted(q); }
+double EdgeMarch::force_at(double tau, const double* q) const { return (gap_.a + gap_.b * tau) + weighted(q); }
 
 EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) const {
-  Bounds B{0.0, std::fabs(b_), 0.0};
-  for (std::size_t k = 0; k < modes_.size(); ++k) {
-    const Mode& m = modes_[k];
+  Bounds B{0.0, std::fabs(gap_.b), 0.0};
+  for (std::size_t k = 0; k < sum_.modes.size(); ++k) {
+    const Mode& m = sum_.modes[k];
     // Energy bounds |qd| <= E, |q| <= E / omega, |q''| = |gamma qd + omega^2 q| <= (gamma + omega) E.
-    const double E = std::fabs(w_[k]) * std::sqrt(qd[k] * qd[k] + m.mode.omega * m.mode.omega * q[k] * q[k]);
+    const double E = std::fabs(sum_.w[k]) * std::sqrt(qd[k] * qd[k] + m.mode.omega * m.mode.omega * q[k] * q[k]);
     B.sb += E;
     B.mb += E / m.mode.omega;
     B.m2 += m.m2 * E;
@@ -126,13 +124,13 @@ EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) const {
 }
 
 double EdgeMarch::force(const double* q0, const double* p0, double tau) {
-  if (local_) {
+  if (poly_.on) {
     double F, dF;
     local_eval(tau, F, dF);
     return F;
   }
-  direct(q0, p0, tau, qs_.data(), qds_.data());
-  return force_at(tau, qs_.data());
+  direct(q0, p0, tau, scratch_.q.data(), scratch_.p.data());
+  return force_at(tau, scratch_.q.data());
 }
 
 bool EdgeMarch::graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi,
@@ -151,36 +149,36 @@ bool EdgeMarch::graze(const double* q0, const double* p0, double fs, double lo, 
 
 double EdgeMarch::lower_bound(const double* q0, const double* p0, double fs) {
   direct(q0, p0, 0.0);
-  const Bounds B = bounds(q_.data(), qd_.data());
-  const double g = fs - measure(force_at(0.0, q_.data()));
-  if (g <= 0 || open_) return 0.0;
-  return std::max(B.sb > 0 ? g / B.sb : kInf, envelope_skip(a_, B.mb, fs));
+  const Bounds B = bounds(now_.q.data(), now_.p.data());
+  const double g = fs - measure(force_at(0.0, now_.q.data()));
+  if (g <= 0 || gap_.open) return 0.0;
+  return std::max(B.sb > 0 ? g / B.sb : kInf, envelope_skip(gap_.a, B.mb, fs));
 }
 
 double EdgeMarch::envelope_skip(double aff, double mb, double fs) const {
   // No crossing while the affine part stays within the modal bound mb of the threshold.
   const double room = fs - mb;
-  const bool inside = sense_ == Sense::Abs ? (mb < fs && std::fabs(aff) <= room) : aff <= room;
-  return inside ? affine_reach(aff, b_, room) : 0.0;
+  const bool inside = gap_.sense == Sense::Abs ? (mb < fs && std::fabs(aff) <= room) : aff <= room;
+  return inside ? affine_reach(aff, gap_.b, room) : 0.0;
 }
 
 double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0) {
   double tau = 0;
   direct(q0, p0, 0.0);
-  double F = force_at(0.0, q_.data());
-  Bounds B = bounds(q_.data(), qd_.data());
+  double F = force_at(0.0, now_.q.data());
+  Bounds B = bounds(now_.q.data(), now_.p.data());
   int since_sync = 0, since_bounds = 0;
-  local_ = false;
-  bool open = open_;  // tau = 0 sits on the threshold and is not an event (see header)
+  poly_.on = false;
+  bool open = gap_.open;  // tau = 0 sits on the threshold and is not an event (see header)
   hit_limit = false;
   for (;;) {
-    if (since_bounds >= kBounds) B = bounds(q_.data(), qd_.data()), since_bounds = 0;
+    if (since_bounds >= kBounds) B = bounds(now_.q.data(), now_.p.data()), since_bounds = 0;
     const double g = fs - measure(F);
     if (!open) {
       if (g <= 0) return tau;  // only at tau = 0: later crossings are bracketed below
       if (B.mb <= 1e-16 * std::max(std::fabs(fs), std::fabs(F))) {
         // The modes have died out below round-off: the signal is affine from here on.
-        const double t = tau + affine_reach(F, b_, fs);
+        const double t = tau + affine_reach(F, gap_.b, fs);
         hit_limit = t > tau_limit && std::isfinite(t);
         return t <= tau_limit ? t : kInf;
       }
@@ -191,7 +189,7 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
     }
     // No crossing before |F| has changed by g at a rate of at most sb, nor before the affine
     // part alone comes within the modal bound mb of the threshold.
-    const double skip = open ? 0.0 : std::max(B.sb > 0 ? g / B.sb : kInf, envelope_skip(a_ + b_ * tau, B.mb, fs));
+    const double skip = open ? 0.0 : std::max(B.sb > 0 ? g / B.sb : kInf, envelope_skip(gap_.a + gap_.b * tau, B.mb, fs));
     if (skip >= kJump * H_) {
       const double next = tau + skip;
       if (next > tau_limit) {
@@ -199,8 +197,8 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
         return kInf;
       }
       direct(q0, p0, next);
-      F = force_at(next, q_.data());
-      B = bounds(q_.data(), qd_.data());
+      F = force_at(next, now_.q.data());
+      B = bounds(now_.q.data(), now_.p.data());
       since_sync = since_bounds = 0;
       if (measure(F) >= fs) return next;  // a safe skip ends at most on the threshold
       tau = next;
@@ -208,12 +206,12 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
     }
     const double t1 = tau + H_;
     if (++since_sync >= kResync) {
-      direct(q0, p0, t1, qn_.data(), qdn_.data());
+      direct(q0, p0, t1, next_.q.data(), next_.p.data());
       since_sync = 0;
     } else {
       grid_step();
     }
-    const double F1 = force_at(t1, qn_.data());
+    const double F1 = force_at(t1, next_.q.data());
     // At an open origin the gap is ~0 (on the threshold): bisection's end there is lo itself.
     if (measure(F1) >= fs) {
       expand(q0, p0, tau);
@@ -224,7 +222,7 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
       const double peak = std::max(measure(F), measure(F1));
       double m2 = B.m2;
       if (peak + 0.125 * m2 * H_ * H_ >= fs && since_bounds > 0) {
-        B = bounds(q_.data(), qd_.data()), since_bounds = 0;
+        B = bounds(now_.q.data(), now_.p.data()), since_bounds = 0;
         m2 = B.m2;
       }
       if (peak + 0.125 * m2 * H_ * H_ >= fs) {
@@ -233,11 +231,11 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
         double where = 0;
         if (graze(q0, p0, fs, tau, F, t1, F1, m2, 0, where))
           return refine(q0, p0, fs, t0, tau, fs - measure(F), where, fs - measure(force(q0, p0, where)));
-        local_ = false;
+        poly_.on = false;
       }
     }
-    q_.swap(qn_);
-    qd_.swap(qdn_);
+    now_.q.swap(next_.q);
+    now_.p.swap(next_.p);
     ++since_bounds;
     tau = t1;
     F = F1;

@@ -43,6 +43,7 @@
 // for a sign change only, and the provable skips start from the first grid point.
 #include <vector>
 
+#include "springblock/integrate/linear/coords.hpp"
 #include "springblock/integrate/linear/damped_mode.hpp"
 
 namespace sb::event_detail {
@@ -60,17 +61,17 @@ class EdgeMarch {
   void finish(double H);
   // Forget the modes (the storage is kept for reuse).
   void reset() {
-    modes_.clear();
-    for (auto* v : {&w_, &p00_, &p01_, &p10_, &p11_}) v->clear();
+    sum_.modes.clear();
+    for (auto* v : {&sum_.w, &sum_.p00, &sum_.p01, &sum_.p10, &sum_.p11}) v->clear();
   }
   // The grid step used by finish() for modes no faster than omega_max.
   static double grid_step(double omega_max);
 
-  void set_sense(Sense sense, bool origin_open) { sense_ = sense, open_ = origin_open; }
+  void set_sense(Sense sense, bool origin_open) { gap_.sense = sense, gap_.open = origin_open; }
 
   // a, b: affine part of F at the start of the quiet phase; fs: the threshold.
-  void set_affine(double a, double b) { a_ = a, b_ = b; }
-  double a() const { return a_; }
+  void set_affine(double a, double b) { gap_.a = a, gap_.b = b; }
+  double a() const { return gap_.a; }
 
   // A cheap lower bound on the first crossing (for ordering the searches).
   double lower_bound(const double* q0, const double* p0, double fs);
@@ -81,9 +82,6 @@ class EdgeMarch {
   // After first_crossing returned +inf: true if the search stopped at tau_limit (a crossing may
   // follow later), false if none can ever follow.
   bool hit_limit = false;
-  // Diagnostics of the last searches: direct (transcendental) evaluations, grid steps and
-  // evaluations of the local Taylor polynomial.
-  long direct_evals = 0, grid_steps = 0, local_evals = 0;
 
  private:
   // Order of the local polynomial and the largest r H it is used at (see the header): the grid
@@ -103,8 +101,8 @@ class EdgeMarch {
   };
   // The modes at tau into q, qd (one exp and sincos per mode).
   void direct(const double* q0, const double* p0, double tau, double* q, double* qd);
-  void direct(const double* q0, const double* p0, double tau) { direct(q0, p0, tau, q_.data(), qd_.data()); }
-  void grid_step();                                              // qn_, qdn_ = q_, qd_ advanced by H
+  void direct(const double* q0, const double* p0, double tau) { direct(q0, p0, tau, now_.q.data(), now_.p.data()); }
+  void grid_step();                                              // next_ = now_ advanced by H
   double force_at(double tau, const double* q) const;            // a + b tau + sum w q
   double weighted(const double* x) const;                        // sum w x (the order of every such sum)
   Bounds bounds(const double* q, const double* qd) const;        // from the modes' energies
@@ -112,7 +110,7 @@ class EdgeMarch {
   // The gap fs - measure(F) at tau and its slope, from one direct evaluation (dF is the modes'
   // velocities summed: no extra exp or sincos).
   void gap(const double* q0, const double* p0, double fs, double tau, double& g, double& dg);
-  double measure(double F) const { return sense_ == Sense::Abs ? (F < 0 ? -F : F) : F; }
+  double measure(double F) const { return gap_.sense == Sense::Abs ? (F < 0 ? -F : F) : F; }
   // First tau >= 0 at which the affine part a + b tau reaches the threshold (inf if never).
   double affine_reach(double a, double b, double fs) const;
   // A skip that provably passes no crossing: the time until the affine part at tau (aff) comes
@@ -135,24 +133,35 @@ class EdgeMarch {
   void expand(const double* q0, const double* p0, double tau_base);
   void local_eval(double tau, double& F, double& dF);
 
-  std::vector<Mode> modes_;
-  // The grid step's hot data apart, one array each (structure of arrays): the modes' weights in
-  // the force (their only copy) and each mode's transition over H,
+  // The modes and, apart, the grid step's hot data, one array each (structure of arrays): the
+  // modes' weights in the force (their only copy) and each mode's transition over H,
   // [q, qd](tau + H) = [[p00, p01], [p10, p11]] [q, qd](tau), so the transition vectorises and a
   // grid step reads only what it uses.
-  std::vector<double> w_, p00_, p01_, p10_, p11_;
-  std::vector<double> q_, qd_;    // the modes at the march's current point
-  std::vector<double> qn_, qdn_;  // at the next grid point
-  std::vector<double> qs_, qds_;  // scratch of the grazing search's direct evaluations
-  double a_ = 0, b_ = 0, H_ = 0;
-  Sense sense_ = Sense::Abs;
-  bool open_ = false;
+  struct Sum {
+    std::vector<Mode> modes;
+    std::vector<double> w, p00, p01, p10, p11;
+  };
+  // The event function: F's affine part a + b tau, the sense of the threshold, an open origin.
+  struct Gap {
+    double a = 0, b = 0;
+    Sense sense = Sense::Abs;
+    bool open = false;
+  };
+  // The Taylor polynomial of F about base (on: gap() and force() read it), when every mode's
+  // rate r has r H <= 1 (ok, set by finish): F = sum coef_j (tau - base)^j, F' = sum dcoef_j ...
+  struct Local {
+    bool ok = false, on = false;
+    double base = 0;
+    double coef[kTaylor + 1] = {};
+    double dcoef[kTaylor] = {};
+  };
+  Sum sum_;
+  Coords now_, next_, scratch_;  // the modes at the march's point, at the next grid point, and
+                                 // the grazing search's direct evaluations
+  Gap gap_;
+  Local poly_;
+  double H_ = 0;
   int budget_ = 0;  // direct evaluations left for the current grazing search
-  bool taylor_ok_ = false;  // every mode's rate r has r H <= 1 (set by finish)
-  bool local_ = false;      // gap() and force() read the Taylor polynomial
-  double base_ = 0;         // its point
-  double coef_[kTaylor + 1] = {};  // its coefficients, F = sum coef_j (tau - base_)^j
-  double dcoef_[kTaylor] = {};     // F' = sum dcoef_j (tau - base_)^j (both by estrin.hpp)
 };
 
 }  // namespace sb::event_detail

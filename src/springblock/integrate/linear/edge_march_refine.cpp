@@ -12,41 +12,40 @@
 namespace sb::event_detail {
 
 void EdgeMarch::expand(const double* q0, const double* p0, double tau_base) {
-  local_ = taylor_ok_;
-  if (!local_) return;
-  base_ = tau_base;
-  direct(q0, p0, tau_base, qs_.data(), qds_.data());
-  const double* q = qs_.data();
-  const double* qd = qds_.data();
+  poly_.on = poly_.ok;
+  if (!poly_.on) return;
+  poly_.base = tau_base;
+  direct(q0, p0, tau_base, scratch_.q.data(), scratch_.p.data());
+  const double* q = scratch_.q.data();
+  const double* qd = scratch_.p.data();
   // coef_j = F^(j)(base) / j!: F and F' at the base summed as force_at and gap sum them, so
   // the polynomial there is their value to the last bit.
-  for (int j = 0; j <= kTaylor; ++j) coef_[j] = 0.0;
-  for (std::size_t k = 0; k < modes_.size(); ++k)
-    add_taylor(w_[k], q[k], qd[k], 2.0 * modes_[k].mode.alpha, modes_[k].mode.omega2, kTaylor, coef_);
-  taylor_scale(kTaylor, coef_);
-  coef_[0] = force_at(tau_base, q);
-  coef_[1] = b_ + weighted(qd);
-  for (int j = 0; j < kTaylor; ++j) dcoef_[j] = (j + 1) * coef_[j + 1];
+  for (int j = 0; j <= kTaylor; ++j) poly_.coef[j] = 0.0;
+  for (std::size_t k = 0; k < sum_.modes.size(); ++k)
+    add_taylor(sum_.w[k], q[k], qd[k], 2.0 * sum_.modes[k].mode.alpha, sum_.modes[k].mode.omega2, kTaylor, poly_.coef);
+  taylor_scale(kTaylor, poly_.coef);
+  poly_.coef[0] = force_at(tau_base, q);
+  poly_.coef[1] = gap_.b + weighted(qd);
+  for (int j = 0; j < kTaylor; ++j) poly_.dcoef[j] = (j + 1) * poly_.coef[j + 1];
 }
 
 void EdgeMarch::local_eval(double tau, double& F, double& dF) {
-  ++local_evals;
-  const double x = tau - base_;
-  F = estrin<kTaylor>(coef_, x);
-  dF = estrin<kTaylor - 1>(dcoef_, x);
+  const double x = tau - poly_.base;
+  F = estrin<kTaylor>(poly_.coef, x);
+  dF = estrin<kTaylor - 1>(poly_.dcoef, x);
 }
 
 void EdgeMarch::gap(const double* q0, const double* p0, double fs, double tau, double& g, double& dg) {
   double F, dF;
-  if (local_) {
+  if (poly_.on) {
     local_eval(tau, F, dF);
   } else {
     direct(q0, p0, tau);
-    F = force_at(tau, q_.data());
-    dF = b_ + weighted(qd_.data());
+    F = force_at(tau, now_.q.data());
+    dF = gap_.b + weighted(now_.p.data());
   }
   g = fs - measure(F);
-  dg = (sense_ == Sense::Abs && F < 0) ? dF : -dF;
+  dg = (gap_.sense == Sense::Abs && F < 0) ? dF : -dF;
 }
 
 // Shrink a bracket with gap g = fs - measure(F) > 0 at lo and <= 0 at hi to round-off in t: the
@@ -56,9 +55,9 @@ void EdgeMarch::gap(const double* q0, const double* p0, double fs, double tau, d
 double EdgeMarch::refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                          double ghi) {
   const double x = shrink(q0, p0, fs, t0, lo, glo, hi, ghi, kInf, 0, 0);
-  if (!local_) return x;
+  if (!poly_.on) return x;
   // The polynomial's root, confirmed by the closed form (see the header).
-  local_ = false;
+  poly_.on = false;
   double gx, dgx;
   gap(q0, p0, fs, x, gx, dgx);
   if (gx <= 0) return x;

@@ -25,23 +25,12 @@
 #include <vector>
 
 #include "springblock/integrate/block_range.hpp"
+#include "springblock/integrate/linear/coords.hpp"
 #include "springblock/integrate/linear/envelope.hpp"
 #include "springblock/integrate/linear/run_shape.hpp"
 #include "springblock/model.hpp"
 
 namespace sb::event_detail {
-
-// Modal coordinates q and their rates p, per slot of the store (the mode k of the run starting at
-// block lo in slot lo + k): a run's state at one time, as its users keep it.
-struct Coords {
-  std::vector<double> q, p;
-  explicit Coords(int N = 0) : q(N), p(N) {}
-};
-// The same at a time t.
-struct Moment {
-  double t = 0;
-  Coords x;
-};
 
 class RunStore {
  public:

@@ -1,0 +1,19 @@
+#pragma once
+// Modal coordinates q and their rates p, one per slot (the run store puts mode k of the run
+// starting at block lo in slot lo + k): a run's state at one time as its users keep it.
+#include <vector>
+
+namespace sb::event_detail {
+
+struct Coords {
+  std::vector<double> q, p;
+  explicit Coords(int N = 0) : q(N), p(N) {}
+};
+
+// The same at a time t.
+struct Moment {
+  double t = 0;
+  Coords x;
+};
+
+}  // namespace sb::event_detail
