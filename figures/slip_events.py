@@ -68,7 +68,9 @@ else:
     axes[1].set_xlabel("total slip of the event [m]")
     axes[1].set_ylabel("events per repetition per decade")
     axes[1].set_title("(b) total slip", loc="left")
-    axes[1].legend(loc="upper right")
+    bottom, top = axes[1].get_ylim()
+    axes[1].set_ylim(bottom / 20, top)  # room below the data for the legend
+    axes[1].legend(loc="lower center")
 reps = len(scenes[0]["slip_event_bins"]["spanning"]) if scenes else "?"
 style.stamp(fig, __file__, doc, note=f"{reps} repetitions per surface, mean +- standard error")
 fig.tight_layout()
