@@ -130,7 +130,7 @@ def slip_events_blocks(doc, path, figs):
                      f"{n['spanning'][0]:.2f} ± {n['spanning'][1]:.2f}", f"{n['single']:.0%}",
                      f"{lo}" + (f"-{hi}" if hi > lo else "") + f" ({share:.0%})", f"{n['below_10um']:.0%}",
                      str(n["unfinished"])])
-    B = [("p", "Beyond the paper: the motion under the friction traces, as slip events (avalanches: a maximal "
+    B = [("p", "The motion under the friction traces, as slip events (avalanches: a maximal "
                "interval in which some contact block slides). For each one the simulator records how many distinct "
                "contact blocks slid in it and its total slip, the sum over its block-slip episodes of the distance "
                "each block slid (scene field `slip_events`; read off the integrators' switches, "
