@@ -33,7 +33,7 @@ void FanOut::sample(const Chain& c, const State& s) {
   }
 }
 
-void FanOut::switched(const Chain& c, const State& s, std::span<const int> blocks) {
+void FanOut::switched(const Chain& c, const State& s, SwitchedBlocks blocks) {
   for (auto& v : views_)
     if (!v.obs->wants_stop() && within_(s.t, v.t_end)) v.obs->switched(c, s, blocks);
 }

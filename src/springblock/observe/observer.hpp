@@ -1,7 +1,8 @@
 #pragma once
 // Observers see the chain at sample times and at its switches; integrators call them and never
 // compute observables themselves (odeint's observer concept).
-#include <span>
+#include <cstddef>
+#include <vector>
 
 #include "springblock/model.hpp"
 #include "springblock/observe/affine_totals.hpp"
@@ -44,6 +45,22 @@ struct AffineForces {
   const AffineTotals* totals = nullptr;
 };
 
+// The contact blocks switched at one instant, as the integrator holds them (a list, or one block),
+// without a copy. (std::span, were the public headers not C++17.)
+class SwitchedBlocks {
+ public:
+  SwitchedBlocks(const std::vector<int>& blocks) : first_(blocks.data()), n_(blocks.size()) {}
+  static SwitchedBlocks one(const int& block) { return SwitchedBlocks(&block, 1); }
+  const int* begin() const { return first_; }
+  const int* end() const { return first_ + n_; }
+  std::size_t size() const { return n_; }
+
+ private:
+  SwitchedBlocks(const int* first, std::size_t n) : first_(first), n_(n) {}
+  const int* first_;
+  std::size_t n_;
+};
+
 class Observer {
  public:
   virtual ~Observer() = default;
@@ -57,7 +74,7 @@ class Observer {
   // share one instant (the per-block solver applies the rules block by block). What switches is
   // the integrator's alone: an observer of the motion between switches (slip events) needs
   // nothing else. The default ignores it.
-  virtual void switched(const Chain& chain, const State& state, std::span<const int> blocks) {
+  virtual void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) {
     (void)chain, (void)state, (void)blocks;
   }
   // An observer may end the run early (mu_s-only scenes, interruption).

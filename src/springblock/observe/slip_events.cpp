@@ -4,7 +4,7 @@
 
 namespace sb {
 
-void SlipEventObserver::switched(const Chain& c, const State& s, std::span<const int> blocks) {
+void SlipEventObserver::switched(const Chain& c, const State& s, SwitchedBlocks blocks) {
   if (dir_.empty()) {
     dir_.assign(c.N, 0);
     u_start_.assign(c.N, 0.0);

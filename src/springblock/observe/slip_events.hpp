@@ -21,7 +21,6 @@
 //
 // The run must start with every contact block stuck (State::at_rest, the ensemble's start).
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "springblock/observe/observer.hpp"
@@ -47,7 +46,7 @@ struct SlipEventRecord {
 
 class SlipEventObserver final : public Observer {
  public:
-  void switched(const Chain& chain, const State& state, std::span<const int> blocks) override;
+  void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) override;
   // Nothing is read at samples: every stretch is taken whole, and no position is needed there.
   void sample(const Chain&, const State&) override {}
   long sample_affine(const Chain&, const State&, long, double, long n, const AffineForces&) override { return n; }

@@ -3,8 +3,6 @@
 // first observer exactly as if it were alone, so the integrator makes the same choices and the
 // first observer's results are the same to the last bit; Observer::switched goes to both. The run
 // is the first observer's: it stops when that one wants it to.
-#include <span>
-
 #include "springblock/observe/observer.hpp"
 
 namespace sb {
@@ -13,7 +11,7 @@ class SwitchTap final : public Observer {
  public:
   SwitchTap(Observer& main, Observer& switches) : main_(main), switches_(switches) {}
 
-  void switched(const Chain& c, const State& s, std::span<const int> blocks) override {
+  void switched(const Chain& c, const State& s, SwitchedBlocks blocks) override {
     main_.switched(c, s, blocks);
     switches_.switched(c, s, blocks);
   }

@@ -169,7 +169,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
     } else {
       const auto switches_before = s_.switches;
       apply_rules_at(i, t0, false);
-      if (s_.switches != switches_before) obs.switched(c_, s_, std::span<const int>(&i, 1));
+      if (s_.switches != switches_before) obs.switched(c_, s_, SwitchedBlocks::one(i));
     }
   }
   const bool friction_only = obs.reads_only_friction();
@@ -199,7 +199,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
         s_.v[i] = 0.0;
       }
       apply_rules_at(i, t_event, true);  // an event always switches its block
-      obs.switched(c_, s_, std::span<const int>(&i, 1));
+      obs.switched(c_, s_, SwitchedBlocks::one(i));
       ++s_.steps;
       continue;
     }
