@@ -43,13 +43,15 @@ set(SB_FIG_INPUTS_accuracy_cost accuracy_cost)
 set(SB_FIG_INPUTS_schematics "")
 set(SB_FIG_INPUTS_design_map "")
 set(SB_FIG_STUDIES_design_map design_map)
+set(SB_FIG_INPUTS_slip_events "")
+set(SB_FIG_STUDIES_slip_events slip_events)
 # figure name -> optional studies it draws (make studies; read from the build tree if run there,
 # else from the committed paper/data/<study>.json, which is what the file dependency watches).
 set(SB_FIG_STUDIES_accuracy_cost rk4_refinement)
 set(SB_FIG_STUDIES_layout layout)
 set(SB_FIG_INPUTS_layout "")
 set(SB_FIGURES fig1 fig_s1 fig_s2 fig2 fig_p1 fig3 fig4 fig5 fig_p2 fig_p3 sensitivity accuracy_cost schematics layout
-               design_map)
+               design_map slip_events)
 
 set(SB_FIG_PNGS "")
 set(SB_FIG_DATA_TARGETS "")

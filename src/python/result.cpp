@@ -55,6 +55,40 @@ py::list stress(const Result& r) {
   return snapshots;
 }
 
+// The event under way at the end of a repetition (start, blocks and episodes so far, slip of its
+// finished episodes), or None.
+py::object under_way(const SlipEventRecord& rec) {
+  if (!rec.unfinished) return py::none();
+  const SlipEvent& e = rec.under_way;
+  return py::dict(py::arg("t_start_s") = e.t_start_s, py::arg("blocks") = e.blocks, py::arg("episodes") = e.episodes,
+                  py::arg("slip_m") = e.slip_m);
+}
+
+// Each repetition's slip events (scene slip_events=True): a dict of numpy columns, one entry per
+// event, and whether an event was under way at the end; None when the scene did not record them.
+py::object slip_events(const Result& r) {
+  if (!r.scene.observe.slip_events) return py::none();
+  py::list runs;
+  for (const auto& run : r.ensemble.runs) {
+    if (!run.slip_events) {  // a repetition that did not finish
+      runs.append(py::none());
+      continue;
+    }
+    std::vector<double> t, duration, slip;
+    std::vector<int> blocks, episodes;
+    const SlipEventRecord& rec = *run.slip_events;
+    for (const SlipEvent& e : rec.events) {
+      t.push_back(e.t_start_s), duration.push_back(e.duration_s), slip.push_back(e.slip_m);
+      blocks.push_back(e.blocks), episodes.push_back(e.episodes);
+    }
+    runs.append(py::dict(py::arg("t_start_s") = array(t), py::arg("duration_s") = array(duration),
+                         py::arg("blocks") = array(blocks), py::arg("episodes") = array(episodes),
+                         py::arg("slip_m") = array(slip), py::arg("unfinished") = rec.unfinished,
+                         py::arg("under_way") = under_way(rec)));
+  }
+  return runs;
+}
+
 std::string statistic_repr(const Statistic& s) {
   if (s.value.n == 0) return s.name + ": not measured (" + (s.not_measured.empty() ? "no value" : s.not_measured) + ")";
   char text[160];
@@ -104,6 +138,11 @@ void bind_result(py::module_& m) {
       .def_property_readonly("stress", &stress,
                              "repetition 0's stress snapshots at the scene's stress_times: dicts of t, f_over_Fn, "
                              "sigma_over_P")
+      .def_property_readonly("slip_events", &slip_events,
+                             "each repetition's slip events when the scene records them (slip_events=True): dicts "
+                             "of t_start_s, duration_s, blocks, episodes, slip_m (numpy, one entry per event) and "
+                             "unfinished (an event was under way at the end, not recorded) with under_way (its start, "
+                             "blocks and episodes so far) or None; None when not recorded")
       .def_property_readonly("runs", [](const Result& r) { return to_python(nlohmann::json(r.ensemble.runs)); },
                              "each repetition's values and work counters, as in the results JSON")
       .def("to_json", [](const Result& r, const std::string& cmd) { return to_python(sb::ensemble_json(r.scene, r.ensemble, cmd)); },

@@ -16,6 +16,7 @@
 
 #include "springblock/integrate/integrator.hpp"
 #include "springblock/observe/fan_out.hpp"
+#include "springblock/observe/switch_tap.hpp"
 #include "springblock/trajectory_spec.hpp"
 
 namespace sb {
@@ -100,10 +101,14 @@ RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* i
   State state = State::at_rest(chain);
   state.work.timed = scene.observe.timed_work;
   FrictionObserver obs(observer_config(scene, chain, rep, interrupt, progress_ns));
+  SlipEventObserver slips;
+  SwitchTap with_slips(obs, slips);
   auto integrator = make_integrator(scene.run);
-  integrator->run(chain, state, scene.duration(), scene.run.sample_dt_s, obs);
+  integrator->run(chain, state, scene.duration(), scene.run.sample_dt_s,
+                  scene.observe.slip_events ? static_cast<Observer&>(with_slips) : obs);
 
   RunResult r = observed(obs, chain, rep);
+  if (scene.observe.slip_events) r.slip_events = slips.record();
   r.steps = state.steps;
   r.rhs_evals = state.rhs_evals;
   r.switches = state.switches;
@@ -129,11 +134,16 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
   State state = State::at_rest(chain);
   state.work.timed = longest.observe.timed_work;
   std::vector<FrictionObserver> observers;
+  std::vector<SlipEventObserver> slips(scenes.size());
+  std::vector<SwitchTap> with_slips;
   observers.reserve(scenes.size());
+  with_slips.reserve(scenes.size());
   std::vector<FanOut::View> views;
   for (std::size_t m = 0; m < scenes.size(); ++m) {
     observers.emplace_back(observer_config(*scenes[m], chain, rep, interrupt, m == 0 ? progress_ns : nullptr));
-    views.push_back({&observers.back(), scenes[m]->duration()});
+    with_slips.emplace_back(observers.back(), slips[m]);
+    Observer* view = scenes[m]->observe.slip_events ? static_cast<Observer*>(&with_slips.back()) : &observers.back();
+    views.push_back({view, scenes[m]->duration()});
   }
   auto integrator = make_integrator(longest.run);
   FanOut fan(std::move(views), longest.run.sample_dt_s,
@@ -148,6 +158,7 @@ std::vector<RunResult> run_shared_repetition(const std::vector<const Scene*>& sc
     r.rhs_evals = m == 0 ? state.rhs_evals : v.rhs_evals;
     r.switches = m == 0 ? state.switches : v.switches;
     r.t_end_s = m == 0 ? state.t : std::min(state.t, v.t_end);
+    if (scenes[m]->observe.slip_events) r.slip_events = slips[m].record();
     out.push_back(std::move(r));
   }
   out[0].wall_s = seconds_since(wall0);
@@ -382,6 +393,7 @@ void to_json(nlohmann::json& j, const RunResult& r) {
        {"steps", r.steps},     {"rhs_evals", r.rhs_evals}, {"switches", r.switches},
        {"t_end_s", r.t_end_s}, {"wall_s", r.wall_s}, {"cpu_s", r.cpu_s}, {"work", r.work}};
   for (const auto& o : observables()) j[o.name] = json_number(r.*o.value);
+  if (r.slip_events) j["slip_events"] = *r.slip_events;
 }
 
 namespace {
@@ -402,6 +414,7 @@ void from_json(const nlohmann::json& j, RunResult& r) {
   r.cpu_s = j.at("cpu_s").get<double>();
   r.contact_fraction = json_double(j.value("contact_fraction", nlohmann::json()));
   for (const auto& o : observables()) r.*o.value = json_double(j.at(o.name));
+  if (j.contains("slip_events")) r.slip_events = j.at("slip_events").get<SlipEventRecord>();
   const auto& w = j.at("work");
 #define SB_COUNT(name, doc) r.work.name = w.at(#name).get<std::int64_t>();
   SB_WORK_COUNTS(SB_COUNT)

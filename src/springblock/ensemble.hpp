@@ -5,12 +5,14 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
 #include "springblock/observables.hpp"
 #include "springblock/observe/friction_observer.hpp"
+#include "springblock/observe/slip_events.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/work_profile.hpp"
 
@@ -35,6 +37,7 @@ struct RunResult {
   double contact_fraction = 0;
   std::vector<Sample> series;            // repetition 0 only, when asked
   std::vector<StressSnapshot> stress;    // repetition 0 only, when asked
+  std::optional<SlipEventRecord> slip_events;  // every repetition, when the scene observes them
 };
 
 struct Statistic {
@@ -106,7 +109,18 @@ void to_json(nlohmann::json& j, const Statistic& s);
 void to_json(nlohmann::json& j, const WorkProfile& w);
 void to_json(nlohmann::json& j, const RunResult& r);
 // The inverse of to_json(RunResult) plus "contact_fraction" (null reads back as NaN); the series
-// and stress snapshots are not carried.
+// and stress snapshots are not carried (the slip events are).
 void from_json(const nlohmann::json& j, RunResult& r);
+
+// A repetition's slip events as JSON columns, one entry per event in time order: t_start_s,
+// duration_s, blocks, episodes, slip_m; unfinished (an event was under way at the end of the run,
+// not recorded) and, then, under_way: its t_start_s, blocks, episodes and the slip_m of its
+// finished episodes. slip_event_json.cpp.
+void to_json(nlohmann::json& j, const SlipEventRecord& r);
+void from_json(const nlohmann::json& j, SlipEventRecord& r);
+// Over the repetitions that recorded slip events (null if none did): the statistic of the events
+// per repetition, the number of events of each size in blocks (sizes that occur, ascending), and
+// how many repetitions ended inside an event.
+nlohmann::json slip_event_summary(const EnsembleResult& e);
 
 }  // namespace sb

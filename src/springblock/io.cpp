@@ -119,6 +119,7 @@ nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const 
                       {"provenance", provenance(command_line)}};
   for (const auto& o : observables())
     if (o.summary != Summary::None) j[o.name] = statistic_json(scene, r, o);
+  if (auto slips = slip_event_summary(r); !slips.is_null()) j["slip_events"] = std::move(slips);
   j.update(schema_entries(scene_json));
   return j;
 }

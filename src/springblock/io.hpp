@@ -32,7 +32,8 @@ nlohmann::json provenance(const std::string& command_line);
 
 // The full results object of an ensemble: the results schema (mu_s, mu_d with mean/std/sem,
 // reps, seed, contact_fraction, method, dt, duration, wall_seconds) plus the scene, derived
-// parameters, per-repetition values and provenance.
+// parameters, per-repetition values and provenance; with the scene's slip_events, their summary
+// (slip_event_summary) and each repetition's events (runs[].slip_events).
 nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& result,
                              const std::string& command_line);
 

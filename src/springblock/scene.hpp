@@ -19,6 +19,7 @@ struct Observables {
   bool series = false;                 // keep mu(t), n_sliding(t) of repetition 0
   std::vector<double> stress_times_s;  // per-block stress snapshots of repetition 0
   bool timed_work = false;             // time each kind of work of every repetition (work_profile.hpp)
+  bool slip_events = false;            // every repetition's slip events and their sizes (observe/slip_events.hpp)
 };
 
 struct Scene {

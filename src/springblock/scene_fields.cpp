@@ -25,6 +25,12 @@ long long integer(const std::string& key, const std::string& text) {
   return x;
 }
 
+bool boolean(const std::string& key, const std::string& text) {
+  if (text == "true" || text == "1") return true;
+  if (text == "false" || text == "0") return false;
+  throw InputError(key, "'" + text + "' is not true or false");
+}
+
 // "MEAN,SD" for a micro-coefficient distribution.
 std::pair<double, double> mean_sd(const std::string& key, const std::string& text) {
   auto comma = text.find(',');
@@ -195,11 +201,9 @@ std::vector<Entry> run_and_extraction_entries() {
     {{"mu_d_skip", "mu_d window starts this many t0 after the first slip, before the end of the run (default 0.25)", "0.25"},
      [](Scene& s, auto& k, auto& v) { s.rules.mu_d_skip_t0 = number(k, v); }},
     {{"stop_after_mu_s", "stop each repetition at the first macroscopic slip; mu_d is then not measured (true/false, default false)", "false"},
-     [](Scene& s, auto& k, auto& v) {
-       if (v == "true" || v == "1") s.run.stop_after_mu_s = true;
-       else if (v == "false" || v == "0") s.run.stop_after_mu_s = false;
-       else throw InputError(k, "'" + v + "' is not true or false");
-     }},
+     [](Scene& s, auto& k, auto& v) { s.run.stop_after_mu_s = boolean(k, v); }},
+    {{"slip_events", "record every repetition's slip events: start, duration, blocks, episodes and total slip (true/false, default false)", "true"},
+     [](Scene& s, auto& k, auto& v) { s.observe.slip_events = boolean(k, v); }},
     {{"stress_times", "comma-separated times for per-block stress snapshots of repetition 0 (default none)", "0.2s,0.3s"},
      [](Scene& s, auto& k, auto& v) {
        s.observe.stress_times_s.clear();

@@ -9,7 +9,7 @@
 //   duration        no integrator's path up to a time t depends on where the run will end, so a
 //                   shorter run is a prefix of the longest (the group runs the longest);
 //   rules           peak_rule, peak_drop, mu_d_skip: how mu_s and mu_d are read off mu(t);
-//   observe         the mu(t) series and stress snapshots kept for repetition 0;
+//   observe         the mu(t) series and stress snapshots kept for repetition 0, slip events;
 //   threads         repetition r draws from rep_seed(seed, r) on whichever thread runs it.
 // stop_after_mu_s is not a member: such a run ends when its own observer sees the first slip, so
 // its length is not the scene's to state, and it has no spec (it is never shared).

@@ -109,3 +109,21 @@ def test_gil_is_released_during_a_run():
         time.sleep(0.001)
     worker.join()
     assert ticks > 10
+
+
+def test_slip_events_are_the_clis(cli):
+    # Each repetition's events as numpy columns, the same as `run --slip-events true --json`.
+    r = sb.run(sb.Scene(FIELDS, slip_events=True))
+    expected = cli("run", *ARGS, "--slip-events", "true", "--json")
+    assert len(r.slip_events) == 4
+    for mine, theirs in zip(r.slip_events, (run["slip_events"] for run in expected["runs"])):
+        assert mine["blocks"].dtype.kind == "i" and len(mine["blocks"]) > 0
+        for key in ("t_start_s", "duration_s", "blocks", "episodes", "slip_m"):
+            assert list(mine[key]) == theirs[key]
+        assert mine["unfinished"] == theirs["unfinished"] and (mine["under_way"] is None) == (not mine["unfinished"])
+    assert r.to_json()["slip_events"] == expected["slip_events"]
+
+
+def test_slip_events_are_none_unless_asked(result):
+    assert result.slip_events is None
+    assert "slip_events" not in result.to_json()

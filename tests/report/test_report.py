@@ -7,7 +7,8 @@ Asserted: the counts printed in the Summary equal summary.json's; every publishe
 n, d, z, k, both thresholds, Delta) equal the summary's to the printed precision; every claim
 appears, and wherever it appears its verdict and its comparison lines equal the summary's; the
 claims overview, the tier-resolution table and the z-score numbers equal the summary's; no
-placeholder ('?', None, nan, unchecked) appears anywhere.
+placeholder ('?', None, nan, unchecked) appears anywhere; the slip-event study's table is its
+document's.
 
 Usage: PYTHONPATH=<repository root> test_report.py --data DIR (DIR/summary.json and the target documents; CTest: the
 configured tier's build/reproduce)."""
@@ -223,6 +224,43 @@ def check_target_cost(md, data):
         check(False, "target cost: no 'all' row")
 
 
+def check_slip_events(md, data):
+    """'Beyond the paper: slip events': each surface's row as its document has it, read here on
+    its own: events per repetition (the library's statistic, and the bins add up to it), the
+    repetitions' mean of events of every contact block, the share of single-block events."""
+    doc = None
+    for path in (os.path.join(data, "slip_events", "slip_events.json"),
+                 os.path.join(REPO, "paper", "data", "slip_events.json")):
+        if os.path.isfile(path):
+            with open(path) as f:
+                doc = json.load(f)
+            break
+    table = next(((h, b) for h, b in tables(md) if h[:3] == ["surface", "contact blocks", "events per repetition"]),
+                 None)
+    check((doc is None) == (table is None), f"slip events: document {doc is not None}, table {table is not None}")
+    if doc is None or table is None:
+        return
+    rows = {r[0]: r for r in table[1]}
+    for sc in doc["scenes"]:
+        b, stat = sc["slip_event_bins"], sc["result"]["slip_events"]["events_per_run"]
+        reps = len(b["spanning"])
+        per_rep = [sum(c) + w for c, w in zip(b["size_counts"], b["spanning"])]
+        check(abs(sum(per_rep) / reps - stat["mean"]) < 1e-9, f"slip events {sc['id']}: bins {per_rep} != {stat}")
+        check(sum(sc["result"]["slip_events"]["counts_by_blocks"]["events"]) == sum(per_rep),
+              f"slip events {sc['id']}: counts_by_blocks != bins")
+        row = rows.get(sc["label"])
+        check(row is not None, f"slip events: no row for {sc['label']}")
+        if row is None:
+            continue
+        events, spanning = row[2].split(" ± "), row[3].split(" ± ")
+        check(same_number(row[1], b["n_contact"]), f"slip events {sc['id']}: contact blocks {row[1]}")
+        check(same_number(events[0], stat["mean"]) and same_number(events[1], stat["sem"]),
+              f"slip events {sc['id']}: events per repetition {row[2]} != {stat}")
+        check(same_number(spanning[0], sum(b["spanning"]) / reps), f"slip events {sc['id']}: spanning {row[3]}")
+        single = sum(c[0] for c in b["size_counts"]) / sum(per_rep)
+        check(same_number(row[4].rstrip("%"), 100 * single), f"slip events {sc['id']}: single {row[4]} != {single}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", required=True)
@@ -242,6 +280,7 @@ def main():
     check_summary_section(md, s)
     check_placeholders(md)
     check_target_cost(md, a.data)
+    check_slip_events(md, a.data)
     for f in FAILURES:
         print("FAIL:", f)
     print(f"tier {s['tier']}: {n_rows} published numbers and {len(s['claims'])} claims ({n_claims} appearances) "

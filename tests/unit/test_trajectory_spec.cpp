@@ -56,6 +56,7 @@ const Verdict kVerdicts[] = {
     {"peak_drop", "0.1", false},
     {"mu_d_skip", "0.5", false},
     {"stress_times", "0.2s", false},
+    {"slip_events", "true", false},
     {"threads", "2", false},
 };
 

@@ -33,6 +33,11 @@ void FanOut::sample(const Chain& c, const State& s) {
   }
 }
 
+void FanOut::switched(const Chain& c, const State& s, SwitchedBlocks blocks) {
+  for (auto& v : views_)
+    if (!v.obs->wants_stop() && within_(s.t, v.t_end)) v.obs->switched(c, s, blocks);
+}
+
 // A run of its own offers a view the samples strictly before its end at once (a sample exactly at
 // the end comes through sample(), see event_driven.cpp, uncoupled.cpp): one past the last of
 // them in [k0, k_stop).

@@ -1,6 +1,9 @@
 #pragma once
-// Observers see the chain at sample times; integrators call them and never compute
-// observables themselves (odeint's observer concept).
+// Observers see the chain at sample times and at its switches; integrators call them and never
+// compute observables themselves (odeint's observer concept).
+#include <cstddef>
+#include <vector>
+
 #include "springblock/model.hpp"
 #include "springblock/observe/affine_totals.hpp"
 #include "springblock/state.hpp"
@@ -42,11 +45,38 @@ struct AffineForces {
   const AffineTotals* totals = nullptr;
 };
 
+// The contact blocks switched at one instant, as the integrator holds them (a list, or one block),
+// without a copy. (std::span, were the public headers not C++17.)
+class SwitchedBlocks {
+ public:
+  SwitchedBlocks(const std::vector<int>& blocks) : first_(blocks.data()), n_(blocks.size()) {}
+  static SwitchedBlocks one(const int& block) { return SwitchedBlocks(&block, 1); }
+  const int* begin() const { return first_; }
+  const int* end() const { return first_ + n_; }
+  std::size_t size() const { return n_; }
+
+ private:
+  SwitchedBlocks(const int* first, std::size_t n) : first_(first), n_(n) {}
+  const int* first_;
+  std::size_t n_;
+};
+
 class Observer {
  public:
   virtual ~Observer() = default;
   // Called at t = 0 and then at every sample time with the state at exactly that time.
   virtual void sample(const Chain& chain, const State& state) = 0;
+  // Called after the switching rules were applied at an instant and switched something, with the
+  // contact blocks they switched (each once). s.t is the instant, and s.u, s.v and s.dir of those
+  // blocks are exact there (the rules read their forces, so the integrator brought them there
+  // first); other blocks' positions may be stale. A block listed that slides still (or is stuck
+  // still) stopped and started again (or started and stopped) at the instant. Several calls may
+  // share one instant (the per-block solver applies the rules block by block). What switches is
+  // the integrator's alone: an observer of the motion between switches (slip events) needs
+  // nothing else. The default ignores it.
+  virtual void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) {
+    (void)chain, (void)state, (void)blocks;
+  }
   // An observer may end the run early (mu_s-only scenes, interruption).
   virtual bool wants_stop() const { return false; }
   // Whether samples must carry exact positions of groove blocks that have no contact

@@ -10,6 +10,7 @@ template <bool Coupled, bool Damped>
 void EventRun::run() {
   sw_.sync(c_, s_);
   sw_.apply(c_, s_, true);
+  if (!sw_.touched_list().empty()) obs_.switched(c_, s_, sw_.touched_list());
   reclassify(true);
   obs_.sample(c_, s_);
   while (s_.t < t_end_ && !obs_.wants_stop()) {

@@ -49,6 +49,7 @@ bool EventRun::quiet_phase() {
     ++s_.work.switch_instants;
     if (next.block >= 0) sw_.flag(next.block);
     if (sw_.apply(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
+    if (!sw_.touched_list().empty()) obs_.switched(c_, s_, sw_.touched_list());
     // Every groove is exact at s.t. Grooves settled before the quiet phase stay settled: their
     // stuck ends have not moved, so their A + B t is still their path.
     reclassify();

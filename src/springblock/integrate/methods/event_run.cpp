@@ -74,6 +74,7 @@ void EventRun::switch_now() {
   else
     active_.materialise_near(s_.t, s_.u.data(), s_.v.data(), sw_.flagged());
   if (sw_.apply(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
+  if (!sw_.touched_list().empty()) obs_.switched(c_, s_, sw_.touched_list());
   reclassify();
 }
 

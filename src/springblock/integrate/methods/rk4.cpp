@@ -24,6 +24,7 @@ struct Workspace {
   // has f_screen = +inf and stop_bias = 0; a stuck one its threshold lowered by a relative
   // 1e-9 and stop_bias = -inf; a groove block +inf and -inf.
   std::vector<double> slide_dir, f_screen, stop_bias;
+  std::vector<int> switched;  // blocks switched at the end of this step, for Observer::switched
   explicit Workspace(int N)
       : a(N), us(N), vs(N), su(N), sv(N), mobile(N), f_kin(N), slide_dir(N), f_screen(N), stop_bias(N) {}
 };
@@ -113,6 +114,7 @@ int apply_switches(const Chain& c, State& s, Workspace& w) {
   int n_sliding = 0;
   for (int i = 0; i < c.N; ++i) {
     if (!c.contact[i]) continue;
+    const std::int64_t switches_before = s.switches;
     if (s.dir[i] != 0 && s.v[i] * s.dir[i] <= 0.0) {
       s.v[i] = 0.0;  // the velocity reached zero within the step: the block stops
       s.dir[i] = 0;
@@ -131,6 +133,7 @@ int apply_switches(const Chain& c, State& s, Workspace& w) {
         ++s.switches;
       }
     }
+    if (s.switches != switches_before) w.switched.push_back(i);
     set_screen(c, s, w, i);
     n_sliding += s.dir[i] != 0;
   }
@@ -180,7 +183,11 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     ++s.work.samples;
     obs.sample(c, s);
   };
+  auto tell_switched = [&] {
+    if (!w.switched.empty()) obs.switched(c, s, w.switched), w.switched.clear();
+  };
   int n_sliding = apply_switches(c, s, w);
+  tell_switched();
   sample();
   while (n < n_end && !obs.wants_stop()) {
     if (all_contact && n_sliding == 0) {
@@ -213,6 +220,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
       WorkTimer timer(s.work, s.work.switching_s);
       n_sliding = apply_switches_screened(c, s, w, n_sliding, screen);
     }
+    tell_switched();
     if (n % stride == 0) sample();
   }
 }

@@ -167,7 +167,9 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       schedule(i, first_stop(i));
       update_friction(i, t0);
     } else {
+      const auto switches_before = s_.switches;
       apply_rules_at(i, t0, false);
+      if (s_.switches != switches_before) obs.switched(c_, s_, SwitchedBlocks::one(i));
     }
   }
   const bool friction_only = obs.reads_only_friction();
@@ -196,7 +198,8 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
         s_.u[i] = u;
         s_.v[i] = 0.0;
       }
-      apply_rules_at(i, t_event, true);
+      apply_rules_at(i, t_event, true);  // an event always switches its block
+      obs.switched(c_, s_, SwitchedBlocks::one(i));
       ++s_.steps;
       continue;
     }
