@@ -1,4 +1,4 @@
-// first_root (events/first_root.hpp), the event search's bracket refinement, against a bisection
+// first_root (numerics/first_root.hpp), the event search's bracket refinement, against a bisection
 // to the same width on functions whose roots are known: it must return what the bisection's
 // contract promises (g <= 0 at the result, within the final width of the first root), in far
 // fewer evaluations on smooth functions, and still end on hard ones (a triple root, a function

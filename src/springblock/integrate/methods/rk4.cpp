@@ -23,10 +23,13 @@ struct Workspace {
   // For the end-of-step screen (switch_screen), kept by set_screen: a sliding contact block
   // has f_screen = +inf and stop_bias = 0; a stuck one its threshold lowered by a relative
   // 1e-9 and stop_bias = -inf; a groove block +inf and -inf.
-  std::vector<double> slide_dir, f_screen, stop_bias;
+  struct Screen {
+    std::vector<double> slide_dir, f_screen, stop_bias;
+  } screen;
   std::vector<int> switched;  // blocks switched at the end of this step, for Observer::switched
   explicit Workspace(int N)
-      : a(N), us(N), vs(N), su(N), sv(N), mobile(N), f_kin(N), slide_dir(N), f_screen(N), stop_bias(N) {}
+      : a(N), us(N), vs(N), su(N), sv(N), mobile(N), f_kin(N),
+        screen{std::vector<double>(N), std::vector<double>(N), std::vector<double>(N)} {}
 };
 
 // One intermediate RK4 stage: accumulate the stage slopes (weight 2) and form the next stage
@@ -104,9 +107,9 @@ SB_KERNEL_CLONES bool switch_screen(const ForceCoefficients& k, double slider, c
 void set_screen(const Chain& c, const State& s, Workspace& w, int i) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const bool sliding = c.contact[i] && s.dir[i] != 0, stuck = c.contact[i] && s.dir[i] == 0;
-  w.slide_dir[i] = c.contact[i] ? s.dir[i] : 0;
-  w.f_screen[i] = stuck ? c.f_static[i] * (1.0 - 1e-9) : inf;
-  w.stop_bias[i] = sliding ? 0.0 : -inf;
+  w.screen.slide_dir[i] = c.contact[i] ? s.dir[i] : 0;
+  w.screen.f_screen[i] = stuck ? c.f_static[i] * (1.0 - 1e-9) : inf;
+  w.screen.stop_bias[i] = sliding ? 0.0 : -inf;
 }
 
 // Stick and slip decisions at the end of a step. Returns the number of sliding blocks.
@@ -144,7 +147,7 @@ int apply_switches(const Chain& c, State& s, Workspace& w) {
 // is the count after the previous call.
 int apply_switches_screened(const Chain& c, State& s, Workspace& w, int n_sliding, bool screen) {
   const bool maybe = !screen || switch_screen(c.force_coefficients(), c.v_slider * s.t, s.u.data(), s.v.data(),
-                                              w.slide_dir.data(), w.f_screen.data(), w.stop_bias.data());
+                                              w.screen.slide_dir.data(), w.screen.f_screen.data(), w.screen.stop_bias.data());
   return maybe ? apply_switches(c, s, w) : n_sliding;
 }
 
