@@ -69,8 +69,7 @@ TEST(ActiveSet, StepsOnlyRunsThatMoveAndWatchesTheirStuckNeighbours) {
   // Groove 3-4 rings, groove 8-9 sits on its (approximate) quasi-static solution.
   settle_grooves(c, s);
   s.v[3] += 1e-3;
-  sb::event_detail::RunShapes a_shapes(c);
-  sb::event_detail::RunStore a_store(c, a_shapes);
+  sb::event_detail::RunStore a_store(c);
   ActiveSet a(c, a_store, true, kAtolU, kAtolV);
   a.rebuild(c, s);
   std::vector<std::pair<int, int>> spans;
@@ -83,8 +82,7 @@ TEST(ActiveSet, StepsOnlyRunsThatMoveAndWatchesTheirStuckNeighbours) {
   EXPECT_EQ(a.kind(8), ActiveSet::kSettled);
   EXPECT_EQ(a.kind(6), ActiveSet::kStuck);
   // Without settling (the reference mode) the quiet groove is stepped as well.
-  sb::event_detail::RunShapes ref_shapes(c);
-  sb::event_detail::RunStore ref_store(c, ref_shapes);
+  sb::event_detail::RunStore ref_store(c);
   ActiveSet ref(c, ref_store, false, kAtolU, kAtolV);
   ref.rebuild(c, s);
   EXPECT_EQ(ref.stepped().size(), 3u);
@@ -96,8 +94,7 @@ TEST(ActiveSet, UncoupledBlocksAreEachTheirOwnRun) {
   c.K_int = 0;
   sb::State s = sb::State::at_rest(c);
   s.dir[1] = s.dir[2] = 1;
-  sb::event_detail::RunShapes a_shapes(c);
-  sb::event_detail::RunStore a_store(c, a_shapes);
+  sb::event_detail::RunStore a_store(c);
   ActiveSet a(c, a_store, false, kAtolU, kAtolV);
   a.rebuild(c, s);
   // Blocks 1 and 2 slide side by side but do not interact: separate runs, no stuck block watched.
@@ -114,8 +111,7 @@ TEST(ActiveSet, SettledGrooveIsTheParticularSolutionOfItsEquations) {
     s.t = 0.02;
     for (int i = 0; i < c.N; ++i) s.u[i] = 1e-6 * std::sin(1.0 + i);
     settle_grooves(c, s);
-    sb::event_detail::RunShapes a_shapes(c);
-    sb::event_detail::RunStore a_store(c, a_shapes);
+    sb::event_detail::RunStore a_store(c);
     ActiveSet a(c, a_store, true, kAtolU, kAtolV);
     a.rebuild(c, s);
     // The groove positions relaxed above are within round-off of the active set's A + B t, so
@@ -141,8 +137,7 @@ TEST(ActiveSet, ClosedFormCrossingReachesTheThresholdExactly) {
   sb::State s = sb::State::at_rest(c);
   s.t = 0.01;
   settle_grooves(c, s);
-  sb::event_detail::RunShapes a_shapes(c);
-  sb::event_detail::RunStore a_store(c, a_shapes);
+  sb::event_detail::RunStore a_store(c);
   ActiveSet a(c, a_store, true, kAtolU, kAtolV);
   a.rebuild(c, s);
   ASSERT_TRUE(a.watched().empty());  // nothing slides, nothing rings
@@ -169,8 +164,7 @@ TEST(ActiveSet, RingingGrooveRetiresOnceItsTransientIsBelowTolerance) {
   s.t = 0.01;
   settle_grooves(c, s);
   s.v[4] += 10 * kAtolV;  // a transient ten times the tolerance
-  sb::event_detail::RunShapes a_shapes(c);
-  sb::event_detail::RunStore a_store(c, a_shapes);
+  sb::event_detail::RunStore a_store(c);
   ActiveSet a(c, a_store, true, kAtolU, kAtolV);
   a.rebuild(c, s);
   EXPECT_EQ(a.kind(4), ActiveSet::kStepped);
@@ -194,8 +188,7 @@ TEST(ActiveSet, ShortRunsAreSteppedUntilTheyOutlastASlip) {
   settle_grooves(c, s);
   s.dir[1] = 1;  // block 1 slides between stuck pawls 0 and 2
   s.v[1] = 0.1 * c.v_slider;
-  sb::event_detail::RunShapes a_shapes(c);
-  sb::event_detail::RunStore a_store(c, a_shapes);
+  sb::event_detail::RunStore a_store(c);
   ActiveSet a(c, a_store, true, kAtolU, kAtolV, 2, 64, 1.0);
   a.rebuild(c, s);
   EXPECT_EQ(a.kind(1), ActiveSet::kStepped);

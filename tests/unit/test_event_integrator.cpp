@@ -127,9 +127,7 @@ TEST(EventIntegrator, QuietPhaseMatchesFineStepping) {
     s0.t = 0.01;
     const double T = 0.01 + 3e-5;
 
-    sb::event_detail::RunShapes q_shapes(c);
-
-    sb::event_detail::RunStore q_store(c, q_shapes);
+    sb::event_detail::RunStore q_store(c);
 
     sb::event_detail::QuietPhase q(c, q_store);
     EXPECT_EQ(q.distinct_decompositions(), 2);  // interior groove and the groove at the chain end
@@ -174,8 +172,7 @@ TEST(EventIntegrator, EdgeSearchFindsFirstSlipWithRingingModes) {
       c.mu_s[i] = c.f_static[i] / c.F_n;
     }
     const double T = s0.t + 2e-3;
-    sb::event_detail::RunShapes q_shapes(c);
-    sb::event_detail::RunStore q_store(c, q_shapes);
+    sb::event_detail::RunStore q_store(c);
     sb::event_detail::QuietPhase q(c, q_store);
     q.begin(c, s0.t, s0.u.data(), s0.v.data());
     const auto next = q.next_threshold(c, T);

@@ -108,8 +108,7 @@ TEST(QuietPhaseSums, EqualTheWrittenRowsForces) {
   const sb::Chain& c = sc.c;
   const sb::State& s = sc.s;
   const int N = c.N;
-  sb::event_detail::RunShapes q_shapes(c);
-  sb::event_detail::RunStore q_store(c, q_shapes);
+  sb::event_detail::RunStore q_store(c);
   sb::event_detail::QuietPhase q(c, q_store);
   const double dt = 1e-5;
   q.set_sample_dt(dt);
@@ -152,8 +151,7 @@ WindowCounts window_sums_against_one_by_one(const std::vector<std::uint8_t>& paw
   const sb::Chain& c = sc.c;
   const sb::State& s = sc.s;
   const int N = c.N;
-  sb::event_detail::RunShapes q_shapes(c), ref_shapes(c);
-  sb::event_detail::RunStore q_store(c, q_shapes), ref_store(c, ref_shapes);
+  sb::event_detail::RunStore q_store(c), ref_store(c);
   sb::event_detail::QuietPhase q(c, q_store), ref(c, ref_store);
   for (auto* p : {&q, &ref}) {
     p->set_sample_dt(dt);
@@ -238,8 +236,7 @@ TEST(QuietPhaseSums, EnvelopeHoldsEverySampleOfItsStretch) {
   const RingingScene sc = ringing_scene(1000 * dt);
   const sb::Chain& c = sc.c;
   const sb::State& s = sc.s;
-  sb::event_detail::RunShapes q_shapes(c);
-  sb::event_detail::RunStore q_store(c, q_shapes);
+  sb::event_detail::RunStore q_store(c);
   sb::event_detail::QuietPhase q(c, q_store);
   q.set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);

@@ -45,9 +45,9 @@ constexpr int kRowWise = 8;
 
 }  // namespace
 
-RunStore::RunStore(const Chain& c, RunShapes& shapes)
+RunStore::RunStore(const Chain& c)
     : gamma_(c.gamma),
-      shapes_(shapes),
+      shapes_(c),
       records_(c.N),
       A_(c.N),
       B_(c.N),

@@ -45,7 +45,8 @@ class RunStore {
     int n() const { return hi - lo; }
   };
 
-  RunStore(const Chain& c, RunShapes& shapes);
+  explicit RunStore(const Chain& c);
+  // The shapes of its runs (run_shape.hpp).
   RunShapes& shapes() { return shapes_; }
 
   // Run r projected from the state at time t (u, v; its sliding blocks' kinetic friction from
@@ -132,7 +133,7 @@ class RunStore {
   void set_bounds(const Run& run, const std::int8_t* dir);
 
   double gamma_;
-  RunShapes& shapes_;
+  RunShapes shapes_;
   Records records_;
   std::vector<double> A_, B_;      // per block: the affine path
   Coords modes_;                   // per slot: q0, p0

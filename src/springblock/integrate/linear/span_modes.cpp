@@ -30,7 +30,7 @@ SpanModes::SpanModes(const Chain& c, RunStore& store)
       end_{0, Coords(c.N)} {}
 
 void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockRange>& spans,
-                        const std::uint8_t* switched) {
+                        const std::int64_t* switched_at, std::int64_t since) {
   // Slots are the blocks' own indices, so a kept run's modes stay where they are.
   kept_.swap(spans_);
   spans_.clear();
@@ -39,7 +39,7 @@ void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockR
   for (const BlockRange& r : spans) {
     const int k = span_of_[r.lo];
     bool keep = current && k >= 0 && kept_[k].lo == r.lo && kept_[k].hi == r.hi && mine(kept_[k]) != nullptr;
-    for (int i = std::max(r.lo - 1, 0); keep && i < std::min(r.hi + 1, N); ++i) keep = !switched[i];
+    for (int i = std::max(r.lo - 1, 0); keep && i < std::min(r.hi + 1, N); ++i) keep = switched_at[i] <= since;
     if (keep) spans_.push_back(kept_[k]), spans_.back().fresh = false, kept_[k].id = -1;
     else spans_.push_back({r.lo, r.hi, 0, 0, false, true});
   }

@@ -39,9 +39,11 @@ class SpanModes {
 
   // After a classification at s.t: the runs in `spans`. A run the previous projection had too is
   // kept as it is (its modes are exact at s.t) if its modes are at s.t, its record is still the
-  // one it projected, and none of its blocks nor the blocks beside it switched since (switched:
-  // per block, 1 if it did); every other run is projected afresh from s.u and s.v.
-  void project(const Chain& c, const State& s, const std::vector<BlockRange>& spans, const std::uint8_t* switched);
+  // one it projected, and none of its blocks nor the blocks beside it switched since (switched_at:
+  // per block, the epoch of its last switch; since: the epoch of the previous projection); every
+  // other run is projected afresh from s.u and s.v.
+  void project(const Chain& c, const State& s, const std::vector<BlockRange>& spans, const std::int64_t* switched_at,
+               std::int64_t since);
   // The modes at now() + h into the step's end, from those at now(): the grid transition for
   // h == H(), the closed form otherwise.
   void advance(double h);
@@ -57,9 +59,10 @@ class SpanModes {
   // The same for the runs a switch of the given blocks reads: those holding or beside one of
   // them, and every grooves-only run (the active set judges whether it has rung down).
   void write_near(const std::vector<int>& blocks, double* u, double* v);
-  // The same for the runs none of whose blocks, nor the blocks beside them, switched (switched:
-  // per block), and the runs then let go: the next projection keeps none.
-  void write_untouched(const std::uint8_t* switched, double* u, double* v);
+  // The same for the runs none of whose blocks, nor the blocks beside them, switched after epoch
+  // `since` (switched_at: per block, the epoch of its last switch). forget() then lets the runs
+  // go: the next projection keeps none.
+  void write_untouched(const std::int64_t* switched_at, std::int64_t since, double* u, double* v);
   void forget();
 
   // Row evaluations of block i, which must be in a run: at the current state (end = false) or

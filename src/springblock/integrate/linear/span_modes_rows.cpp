@@ -39,11 +39,11 @@ void SpanModes::write_near(const std::vector<int>& blocks, double* u, double* v)
   }
 }
 
-void SpanModes::write_untouched(const std::uint8_t* switched, double* u, double* v) {
+void SpanModes::write_untouched(const std::int64_t* switched_at, std::int64_t since, double* u, double* v) {
   for (const Span& sp : spans_) {
     bool touched = false;
     const int N = static_cast<int>(span_of_.size());
-    for (int i = std::max(sp.lo - 1, 0); i < std::min(sp.hi + 1, N) && !touched; ++i) touched = switched[i] != 0;
+    for (int i = std::max(sp.lo - 1, 0); i < std::min(sp.hi + 1, N) && !touched; ++i) touched = switched_at[i] > since;
     if (!touched && mine(sp) != nullptr) write_rows(sp, u, v);
   }
 }

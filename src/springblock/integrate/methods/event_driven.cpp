@@ -13,8 +13,15 @@ void EventDriven::run(const Chain& c, State& s, double t_end, double sample_dt, 
     event_detail::run_uncoupled(c, s, t_end, sample_dt, obs, switch_log_);
     return;
   }
-  const event_detail::EventOptions opt{tol_, fast_forward_, modal_max_run_, modal_max_groove_,
-                                       exact_stepper_ && fast_forward_, exact_max_run_, switch_log_};
+  const event_detail::EventOptions opt{tol_,
+                                       fast_forward_,
+                                       modal_max_run_,
+                                       modal_max_groove_,
+                                       exact_stepper_ && fast_forward_,
+                                       exact_max_run_,
+                                       switch_log_,
+                                       !obs.reads_groove_interiors(),
+                                       obs.reads_only_friction()};
   event_detail::EventRun run(c, s, t_end, sample_dt, obs, opt);
   if (e.coupled && e.damped) run.run<true, true>();
   else if (e.coupled) run.run<true, false>();

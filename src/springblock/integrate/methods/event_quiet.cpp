@@ -1,11 +1,6 @@
-// The event method's quiet phase: every contact block stuck, the grooves propagated exactly
-// (linear/quiet_phase.hpp) to the first threshold crossing, with the samples inside served from
-// the closed form. Exact, except that an observer of contact forces only gets groove modes below
-// the settle scales dropped (QuietPhase::set_sample_scales); once every groove has rung down the
-// observer may take the rest of the phase's samples as one affine stretch (sample_affine).
 #include <algorithm>
 
-#include "springblock/integrate/methods/event_run.hpp"
+#include "springblock/integrate/methods/event_quiet.hpp"
 
 namespace sb::event_detail {
 namespace {
@@ -27,52 +22,51 @@ class StretchOf final : public SampleStretch {
 
 }  // namespace
 
-bool EventRun::quiet_phase() {
+QuietEvolve::QuietEvolve(EventCore& core)
+    : core_(core), quiet_(core.c, core.store), sample_(core.s), fa_(core.c.N), fb_(core.c.N) {
+  if (core.opt.ends_only) quiet_.set_sample_scales(core.active.settle_eps_u(), core.active.settle_eps_v());
+}
+
+bool QuietEvolve::phase() {
+  State& s = core_.s;
   // A quiet phase that follows sliding closes a slip event (the work profile's unit).
-  if (s_.work.slip_starts > slip_starts_seen_) ++s_.work.slip_events;
-  slip_starts_seen_ = s_.work.slip_starts;
+  if (s.work.slip_starts > slip_starts_seen_) ++s.work.slip_events;
+  slip_starts_seen_ = s.work.slip_starts;
   QuietPhase::Next next;
   {
-    WorkTimer timer(s_.work, s_.work.quiet_s);
-    quiet_->begin(c_, s_.t, s_.u.data(), s_.v.data());
-    next = quiet_->next_threshold(c_, t_end_);
+    WorkTimer timer(s.work, s.work.quiet_s);
+    quiet_.begin(core_.c, s.t, s.u.data(), s.v.data());
+    next = quiet_.next_threshold(core_.c, core_.t_end);
   }
-  if (!serve_quiet_samples(next.t)) return false;
+  if (!serve_samples(next.t)) return false;
   {
-    WorkTimer timer(s_.work, s_.work.quiet_s);
-    quiet_->evaluate(next.t, s_.u.data(), s_.v.data());
-    quiet_->release();
+    WorkTimer timer(s.work, s.work.quiet_s);
+    quiet_.evaluate(next.t, s.u.data(), s.v.data());
+    quiet_.release();
   }
-  s_.t = next.t;
-  {
-    WorkTimer timer(s_.work, s_.work.switching_s);
-    ++s_.work.switch_instants;
-    if (next.block >= 0) sw_.flag(next.block);
-    if (sw_.apply(c_, s_) > 0 && opt_.switch_log) opt_.switch_log->push_back(s_.t);
-    if (!sw_.touched_list().empty()) obs_.switched(c_, s_, sw_.touched_list());
-    // Every groove is exact at s.t. Grooves settled before the quiet phase stay settled: their
-    // stuck ends have not moved, so their A + B t is still their path.
-    reclassify();
-  }
-  stage1_valid_ = false;
-  sample_if_due();
+  s.t = next.t;
+  // Every groove is exact at s.t. Grooves settled before the quiet phase stay settled: their
+  // stuck ends have not moved, so their A + B t is still their path.
+  if (next.block >= 0) core_.sw.flag(next.block);
+  core_.switch_now(false);
+  core_.sample_if_due();
   return true;
 }
 
 // The samples before t_next from the quiet phase's closed form; false when the observer stopped
 // the run at one of them (the state is then exact at that sample).
-bool EventRun::serve_quiet_samples(double t_next) {
-  if (!(clock_.next() < t_next)) return true;
-  WorkTimer timer(s_.work, s_.work.sampling_s);
+bool QuietEvolve::serve_samples(double t_next) {
+  if (!(core_.clock.next() < t_next)) return true;
+  WorkTimer timer(core_.s.work, core_.s.work.sampling_s);
   // Contact blocks do not move in a quiet phase: copy them once, update the grooves per sample.
-  std::copy(s_.u.begin(), s_.u.end(), sample_.u.begin());
-  std::copy(s_.v.begin(), s_.v.end(), sample_.v.begin());
-  std::copy(s_.dir.begin(), s_.dir.end(), sample_.dir.begin());
-  const double dead_after = quiet_->all_dead_after();
+  std::copy(core_.s.u.begin(), core_.s.u.end(), sample_.u.begin());
+  std::copy(core_.s.v.begin(), core_.s.v.end(), sample_.v.begin());
+  std::copy(core_.s.dir.begin(), core_.s.dir.end(), sample_.dir.begin());
+  const double dead_after = quiet_.all_dead_after();
   affine_ready_ = false;
-  long long next_offer = clock_.index();  // a declined stretch is not offered again sample by sample
-  while (clock_.next() < t_next) {
-    if (clock_.next() >= dead_after) {
+  long long next_offer = core_.clock.index();  // a declined stretch is not offered again sample by sample
+  while (core_.clock.next() < t_next) {
+    if (core_.clock.next() >= dead_after) {
       bool stopped = false;
       if (sample_affine_stretch(t_next, stopped)) {
         if (stopped) return false;
@@ -80,16 +74,16 @@ bool EventRun::serve_quiet_samples(double t_next) {
       }
     }
     bool stopped = false;
-    if (ends_only_ && clock_.index() >= next_offer && offer_block(std::min(t_next, dead_after), stopped, next_offer)) {
+    if (core_.opt.ends_only && core_.clock.index() >= next_offer && offer_block(std::min(t_next, dead_after), stopped, next_offer)) {
       if (stopped) return false;
       continue;
     }
-    sample_.t = clock_.next();
-    serve_quiet_sample();
-    clock_.advance();
-    if (obs_.wants_stop()) {
-      quiet_->evaluate(sample_.t, s_.u.data(), s_.v.data());
-      s_.t = sample_.t;
+    sample_.t = core_.clock.next();
+    serve_sample();
+    core_.clock.advance();
+    if (core_.obs.wants_stop()) {
+      quiet_.evaluate(sample_.t, core_.s.u.data(), core_.s.v.data());
+      core_.s.t = sample_.t;
       return false;
     }
   }
@@ -99,29 +93,29 @@ bool EventRun::serve_quiet_samples(double t_next) {
 // One sample at sample_.t from the quiet phase's modes. An observer of contact forces alone gets
 // the friction sums straight from the modes (QuietPhase::friction_sums), and the rows only where
 // it needs positions too.
-void EventRun::serve_quiet_sample() {
-  ++s_.work.samples;
+void QuietEvolve::serve_sample() {
+  ++core_.s.work.samples;
   stamp_sample();
-  quiet_->advance_sample(sample_.t, ends_only_);
-  sample_.presummed.valid = ends_only_;
-  if (ends_only_) {
-    quiet_->friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
+  quiet_.advance_sample(sample_.t, core_.opt.ends_only);
+  sample_.presummed.valid = core_.opt.ends_only;
+  if (core_.opt.ends_only) {
+    quiet_.friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
     sample_.presummed.n_sliding = 0;  // nothing slides in a quiet phase
   }
-  if (!ends_only_ || obs_.needs_positions_at(sample_.t))
-    quiet_->write_sample(sample_.t, sample_.u.data(), sample_.v.data(), ends_only_);
-  obs_.sample(c_, sample_);
+  if (!core_.opt.ends_only || core_.obs.needs_positions_at(sample_.t))
+    quiet_.write_sample(sample_.t, sample_.u.data(), sample_.v.data(), core_.opt.ends_only);
+  core_.obs.sample(core_.c, sample_);
   sample_.presummed.valid = false;
 }
 
 // The clock past `used` samples an observer took at once; if it then wants to stop, the state is
 // brought to the last of them.
-void EventRun::took_samples(long used, bool& stopped) {
-  clock_.advance(used);
-  if (obs_.wants_stop()) {
-    const double t_last = clock_.time_of(clock_.index() - 1);
-    quiet_->evaluate(t_last, s_.u.data(), s_.v.data());
-    s_.t = t_last;
+void QuietEvolve::took_samples(long used, bool& stopped) {
+  core_.clock.advance(used);
+  if (core_.obs.wants_stop()) {
+    const double t_last = core_.clock.time_of(core_.clock.index() - 1);
+    quiet_.evaluate(t_last, core_.s.u.data(), core_.s.v.data());
+    core_.s.t = t_last;
     stopped = true;
   }
 }
@@ -134,65 +128,75 @@ void EventRun::took_samples(long used, bool& stopped) {
 // where the phase's samples end, so the samples after it are served as they would be without
 // it; a sample looked at inside it (at) is brought there by the recurrence through every sample
 // before it, the doubles one-by-one service gives.
-bool EventRun::offer_block(double t_stop, bool& stopped, long long& next_offer) {
-  const long long k0 = clock_.index();
+bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offer) {
+  const long long k0 = core_.clock.index();
   const long block = QuietPhase::kSampleBlock;
-  const long long k_end = std::min((k0 / block + 1) * block, clock_.first_at_or_after(t_stop));
+  const long long k_end = std::min((k0 / block + 1) * block, core_.clock.first_at_or_after(t_stop));
   const long n = static_cast<long>(k_end - k0);
   if (n <= 0) return false;
-  const double dt = clock_.dt();
+  const double dt = core_.clock.dt();
   long long cursor = k0 - 1;  // the last sample advance_sample was brought to in this stretch
   bool summed = false;
   StretchOf stretch(
       [&](long k, long m, double& sum_abs, double& sum_signed) {
-        return summed = quiet_->window_sums(k, dt, m, sum_abs, sum_signed);
+        return summed = quiet_.window_sums(k, dt, m, sum_abs, sum_signed);
       },
-      [&](long k, long m, SampleStretch::Envelope& e) { return quiet_->envelope(k, dt, m, e); },
+      [&](long k, long m, SampleStretch::Envelope& e) { return quiet_.envelope(k, dt, m, e); },
       [&](long k) -> const State& {
         // Several observers of one trajectory (FanOut) each look in order from the stretch's
         // start: a look behind the cursor replays the recurrence from there.
-        if (cursor < k0) quiet_->save_cursor();
-        else if (k < cursor) quiet_->restore_cursor(), cursor = k0 - 1;
-        while (cursor < k) quiet_->advance_sample(clock_.time_of(++cursor), true);
-        sample_.t = clock_.time_of(k);
+        if (cursor < k0) quiet_.save_cursor();
+        else if (k < cursor) quiet_.restore_cursor(), cursor = k0 - 1;
+        while (cursor < k) quiet_.advance_sample(core_.clock.time_of(++cursor), true);
+        sample_.t = core_.clock.time_of(k);
         stamp_sample();
         sample_.presummed.valid = true;
-        quiet_->friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
+        quiet_.friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
         sample_.presummed.n_sliding = 0;
-        if (obs_.needs_positions_at(sample_.t))
-          quiet_->write_sample(sample_.t, sample_.u.data(), sample_.v.data(), true);
+        if (core_.obs.needs_positions_at(sample_.t))
+          quiet_.write_sample(sample_.t, sample_.u.data(), sample_.v.data(), true);
         return sample_;
       });
-  sample_.t = clock_.next();
+  sample_.t = core_.clock.next();
   stamp_sample();
-  const long used = obs_.sample_sums(c_, sample_, static_cast<long>(k0), dt, n, stretch);
+  const long used = core_.obs.sample_sums(core_.c, sample_, static_cast<long>(k0), dt, n, stretch);
   sample_.presummed.valid = false;
-  if (used < n && cursor >= k0) quiet_->restore_cursor();
+  if (used < n && cursor >= k0) quiet_.restore_cursor();
   // Declined: its samples are served one by one. Offering its second half again, and so on,
   // cost more mode evaluations than it saved (callgrind, periodic:10,10 N = 360 1 s x4: 1669 M
   // against 1666 M).
   next_offer = k_end;
   if (used <= 0) return false;
-  (summed ? s_.work.summed_samples : s_.work.peak_samples) += used;
+  (summed ? core_.s.work.summed_samples : core_.s.work.peak_samples) += used;
   took_samples(used, stopped);
   return true;
 }
 
-bool EventRun::sample_affine_stretch(double t_next, bool& stopped) {
+bool QuietEvolve::sample_affine_stretch(double t_next, bool& stopped) {
   if (!affine_ready_) {
-    quiet_->affine_forces(c_, s_.u.data(), fa_.data(), fb_.data());
+    quiet_.affine_forces(core_.c, core_.s.u.data(), fa_.data(), fb_.data());
     affine_ready_ = true;
   }
   // Samples k dt < t_next, counted exactly as the clock will produce them.
-  const long long k0 = clock_.index(), k_end = clock_.first_at_or_after(t_next);
-  sample_.t = clock_.next();
+  const long long k0 = core_.clock.index(), k_end = core_.clock.first_at_or_after(t_next);
+  sample_.t = core_.clock.next();
   stamp_sample();
-  const long used = obs_.sample_affine(c_, sample_, static_cast<long>(k0), clock_.dt(), static_cast<long>(k_end - k0),
+  const long used = core_.obs.sample_affine(core_.c, sample_, static_cast<long>(k0), core_.clock.dt(), static_cast<long>(k_end - k0),
                                        AffineForces{fa_.data(), fb_.data()});
   if (used <= 0) return false;
-  s_.work.stretch_samples += used;
+  core_.s.work.stretch_samples += used;
   took_samples(used, stopped);
   return true;
+}
+
+// Everything but the kinematics that an observer reads from a sample: the work counters and how
+// many contact blocks have slid (the all-slipped end of loading). A stale count there would defer
+// the end of loading to the next active phase that holds a sample, so mu_s would depend on the
+// sample spacing (test FirstPeak.EndOfLoadingDoesNotDependOnSampleSpacing).
+void QuietEvolve::stamp_sample() {
+  const State& s = core_.s;
+  sample_.steps = s.steps, sample_.rhs_evals = s.rhs_evals, sample_.switches = s.switches;
+  sample_.n_slipped_once = s.n_slipped_once;
 }
 
 }  // namespace sb::event_detail

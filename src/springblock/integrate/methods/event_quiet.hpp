@@ -1,0 +1,42 @@
+#pragma once
+// The event method's quiet phase (an evolve step): every contact block stuck, the grooves
+// propagated exactly (linear/quiet_phase.hpp) to the first threshold crossing, with the samples
+// inside served from the closed form. Exact, except that an observer of contact forces only gets
+// groove modes below the settle scales dropped (QuietPhase::set_sample_scales); once every
+// groove has rung down the observer may take the rest of the phase's samples as one affine
+// stretch (sample_affine), and before that blocks of them as closed-form sums (sample_sums).
+#include <vector>
+
+#include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/methods/event_core.hpp"
+
+namespace sb::event_detail {
+
+class QuietEvolve {
+ public:
+  explicit QuietEvolve(EventCore& core);
+  // The phase from s.t to its first threshold crossing, switched there. False when the observer
+  // stopped the run inside it (the state is then exact at its last sample).
+  bool phase();
+
+ private:
+  bool serve_samples(double t_next);
+  void serve_sample();
+  // Everything but the kinematics that an observer reads from a sample.
+  void stamp_sample();
+  // Quiet-phase samples once every groove has rung down: one affine stretch (false when the
+  // observer took none, so the caller samples one by one).
+  bool sample_affine_stretch(double t_next, bool& stopped);
+  // A block of quiet-phase samples taken as sums over the modes.
+  bool offer_block(double t_stop, bool& stopped, long long& next_offer);
+  void took_samples(long used, bool& stopped);
+
+  EventCore& core_;
+  QuietPhase quiet_;
+  State sample_;                 // the state at a sample served from the closed form
+  std::vector<double> fa_, fb_;  // affine contact forces a + b t once the phase's modes died
+  bool affine_ready_ = false;
+  std::int64_t slip_starts_seen_ = 0;  // s.work.slip_starts at the last quiet phase
+};
+
+}  // namespace sb::event_detail
