@@ -24,37 +24,35 @@ constexpr double kSettleFrac = 0.1;
 
 ActiveSet::ActiveSet(const Chain& c, RunStore& store, bool settle_grooves, double atol_u, double atol_v,
                      int modal_max_run, int modal_max_groove, double t_end)
-    : N_(c.N),
-      K_int_(c.K_int),
-      settle_grooves_(settle_grooves),
-      modal_max_(settle_grooves && c.K_int > 0 ? modal_max_run : 0),
-      modal_max_groove_(settle_grooves && c.K_int > 0 ? modal_max_groove : 0),
-      promote_age_(4.0 * M_PI / c.omega_max()),
-      t_end_(t_end),
+    : rules_{c.K_int,
+             settle_grooves,
+             settle_grooves && c.K_int > 0 ? modal_max_run : 0,
+             settle_grooves && c.K_int > 0 ? modal_max_groove : 0,
+             4.0 * M_PI / c.omega_max(),
+             kSettleFrac * atol_u,
+             kSettleFrac * atol_v,
+             t_end},
       modal_(c, store),
-      dir_prev_(c.N, 0),
-      kind_prev_(c.N, kStuck),
-      eps_u_(kSettleFrac * atol_u),
-      eps_v_(kSettleFrac * atol_v),
+      prev_{std::vector<std::int8_t>(c.N, 0), std::vector<std::uint8_t>(c.N, kStuck)},
       kind_(c.N, kStuck),
       store_(store),
       events_(c.N),
-      fresh_(c.N, 0) {
-  modal_.set_settle_scales(eps_u_, eps_v_);
+      fresh_{std::vector<std::uint8_t>(c.N, 0), {}} {
+  modal_.set_settle_scales(rules_.eps_u, rules_.eps_v);
   runs_.reserve(c.N);
-  stepped_.reserve(c.N);
-  watched_.reserve(c.N);
+  list_.stepped.reserve(c.N);
+  list_.watched.reserve(c.N);
 }
 
 bool ActiveSet::settled_now(const State& s, BlockRange r) const {
-  if (!settle_grooves_) return false;
+  if (!rules_.settle_grooves) return false;
   const RunShape& sh = store_.shapes().of(r);
   const double uL = sh.left ? s.u[r.lo - 1] : 0.0, uR = sh.right ? s.u[r.hi] : 0.0;
   for (int k = 0; k < r.size(); ++k) {
     const int i = r.lo + k;
     const double A = sh.path.a0[k] + uL * sh.path.gL[k] + uR * sh.path.gR[k];
-    if (std::fabs(s.u[i] - (A + sh.path.B[k] * s.t)) > eps_u_) return false;
-    if (std::fabs(s.v[i] - sh.path.B[k]) > eps_v_) return false;
+    if (std::fabs(s.u[i] - (A + sh.path.B[k] * s.t)) > rules_.eps_u) return false;
+    if (std::fabs(s.v[i] - sh.path.B[k]) > rules_.eps_v) return false;
   }
   return true;
 }
@@ -64,7 +62,7 @@ void ActiveSet::rebuild(const Chain& c, const State& s) {
   for (const Run& r : runs_)
     if (r.kind == kSettled) drop_old(r);
   runs_.clear();
-  find_runs(c, s, 0, N_, runs_);
+  find_runs(c, s, 0, N(), runs_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
   modal_.clear();
   clear_fresh();
@@ -90,7 +88,7 @@ void ActiveSet::find_runs(const Chain& c, const State& s, int lo, int hi, std::v
     int j = i;
     bool grooves = !contact[i];
     // Without internal springs every block is its own system.
-    if (K_int_ > 0)
+    if (rules_.K_int > 0)
       while (j + 1 < hi) {
         if (j + 9 <= hi && load8(contact + j + 1) == 0) {  // eight groove blocks: all mobile
           j += 8;
@@ -106,14 +104,14 @@ void ActiveSet::find_runs(const Chain& c, const State& s, int lo, int hi, std::v
 }
 
 bool ActiveSet::switched(const State& s, const std::uint8_t* touched, int i) const {
-  return i >= 0 && i < N_ && (s.dir[i] != dir_prev_[i] || (touched != nullptr && touched[i]));
+  return i >= 0 && i < N() && (s.dir[i] != prev_.dir[i] || (touched != nullptr && touched[i]));
 }
 
 bool ActiveSet::untouched(const State& s, const std::uint8_t* touched, BlockRange r) const {
   // Eight blocks at a time, as find_runs: a long groove run is checked in a few words.
-  const int lo = std::max(r.lo - 1, 0), hi = std::min(r.hi + 1, N_);
+  const int lo = std::max(r.lo - 1, 0), hi = std::min(r.hi + 1, N());
   const std::int8_t* dir = s.dir.data();
-  const std::int8_t* prev = dir_prev_.data();
+  const std::int8_t* prev = prev_.dir.data();
   int i = lo;
   for (; i + 8 <= hi; i += 8)
     if (load8(dir + i) != load8(prev + i) || (touched != nullptr && load8(touched + i) != 0)) return false;
@@ -138,7 +136,7 @@ ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uin
     if (settled_now(s, r.span)) return kSettled;
   }
   // A run holding a contact block starts stepped; promote_runs() makes it modal if it lasts.
-  return r.grooves && r.span.hi - r.span.lo <= modal_max_groove_ ? kModal : kStepped;
+  return r.grooves && r.span.hi - r.span.lo <= rules_.modal_max_groove ? kModal : kStepped;
 }
 
 // A run that becomes modal is projected afresh at s.t. (One that stays modal with nothing in or
@@ -163,32 +161,32 @@ void ActiveSet::drop_old(const Run& r) {
 }
 
 void ActiveSet::set_fresh(BlockRange r) {
-  std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 1);
-  fresh_runs_.push_back(r);
+  std::fill(fresh_.block.begin() + r.lo, fresh_.block.begin() + r.hi, 1);
+  fresh_.runs.push_back(r);
 }
 
 void ActiveSet::clear_fresh() {
-  for (const BlockRange& r : fresh_runs_) std::fill(fresh_.begin() + r.lo, fresh_.begin() + r.hi, 0);
-  fresh_runs_.clear();
+  for (const BlockRange& r : fresh_.runs) std::fill(fresh_.block.begin() + r.lo, fresh_.block.begin() + r.hi, 0);
+  fresh_.runs.clear();
 }
 
 void ActiveSet::list_stepped(const State& s) {
-  stepped_.clear();
-  watched_.clear();
-  ringing_.clear();
-  next_promotion_ = kInf;
+  list_.stepped.clear();
+  list_.watched.clear();
+  list_.ringing.clear();
+  list_.next_promotion = kInf;
   for (std::size_t k = 0; k < runs_.size(); ++k) {
     const Run& r = runs_[k];
     if (r.kind != kStepped) continue;
-    if (r.grooves) ringing_.push_back(static_cast<int>(k));
-    else if (r.span.hi - r.span.lo <= modal_max_) next_promotion_ = std::min(next_promotion_, r.formed + promote_age_);
-    stepped_.push_back(r.span);
+    if (r.grooves) list_.ringing.push_back(static_cast<int>(k));
+    else if (r.span.hi - r.span.lo <= rules_.modal_max) list_.next_promotion = std::min(list_.next_promotion, r.formed + rules_.promote_age);
+    list_.stepped.push_back(r.span);
     // In block order; a stuck block between two stepped runs is listed once.
-    if (K_int_ > 0 && r.span.lo > 0 && (watched_.empty() || watched_.back() != r.span.lo - 1))
-      watched_.push_back(r.span.lo - 1);
+    if (rules_.K_int > 0 && r.span.lo > 0 && (list_.watched.empty() || list_.watched.back() != r.span.lo - 1))
+      list_.watched.push_back(r.span.lo - 1);
     for (int i = r.span.lo; i < r.span.hi; ++i)
-      if (s.dir[i] != 0) watched_.push_back(i);
-    if (K_int_ > 0 && r.span.hi < N_) watched_.push_back(r.span.hi);
+      if (s.dir[i] != 0) list_.watched.push_back(i);
+    if (rules_.K_int > 0 && r.span.hi < N()) list_.watched.push_back(r.span.hi);
   }
 }
 
@@ -199,19 +197,19 @@ void ActiveSet::materialise(double t, double* u, double* v, bool at_sample, bool
 }
 
 void ActiveSet::materialise_near(double t, double* u, double* v, const std::vector<int>& blocks) {
-  done_.clear();
+  work_.done.clear();
   for (int b : blocks)
     for (int j = b - 1; j <= b + 1; ++j) {
-      if (j < 0 || j >= N_) continue;
+      if (j < 0 || j >= N()) continue;
       if (kind_[j] == kSettled) {
         // The whole run: it may merge into a new run that is stepped or projected from s.u.
         if (u[j] == store_.path_u(j, t) && v[j] == store_.B(j)) continue;  // written already
         store_.write_path(store_.run(j), t, u, v);
       } else if (kind_[j] == kModal) {
         const int lo = modal_.run_start(j);
-        if (std::find(done_.begin(), done_.end(), lo) != done_.end()) continue;  // a few runs at most
+        if (std::find(work_.done.begin(), work_.done.end(), lo) != work_.done.end()) continue;  // a few runs at most
         modal_.materialise_run(j, t, u, v);
-        done_.push_back(lo);
+        work_.done.push_back(lo);
       }
     }
 }

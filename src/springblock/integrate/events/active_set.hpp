@@ -63,10 +63,10 @@ class ActiveSet {
   void update(const Chain& c, const State& s, const std::uint8_t* touched, const std::vector<int>& touched_list);
 
   // Runs stepped by Dormand-Prince, in block order.
-  const std::vector<BlockRange>& stepped() const { return stepped_; }
+  const std::vector<BlockRange>& stepped() const { return list_.stepped; }
   // Blocks whose events the step's dense output must be searched for: every sliding block and
   // every stuck block next to a stepped run (K_int > 0).
-  const std::vector<int>& watched() const { return watched_; }
+  const std::vector<int>& watched() const { return list_.watched; }
 
   enum Kind : std::uint8_t { kStuck = 0, kStepped = 1, kSettled = 2, kModal = 3 };
   Kind kind(int i) const { return static_cast<Kind>(kind_[i]); }
@@ -98,8 +98,8 @@ class ActiveSet {
   void materialise_near(double t, double* u, double* v, const std::vector<int>& blocks);
   int modal_runs() const { return modal_.count(); }
   // The settle scales: a grooves-only run's transient below these (in u and v) is dropped.
-  double settle_eps_u() const { return eps_u_; }
-  double settle_eps_v() const { return eps_v_; }
+  double settle_eps_u() const { return rules_.eps_u; }
+  double settle_eps_v() const { return rules_.eps_v; }
 
   // After an accepted step at s.t: ringing runs whose transient has died become settled and
   // leave the stepped set. Returns true when the stepped set changed.
@@ -109,11 +109,11 @@ class ActiveSet {
   // at s.t), and the events of their blocks and stuck neighbours are searched. Returns true when
   // the stepped set changed. The earliest time one is due (+inf if none): next_promotion().
   bool promote_runs(const Chain& c, const State& s);
-  double next_promotion() const { return next_promotion_; }
+  double next_promotion() const { return list_.next_promotion; }
   // Two periods of the chain's fastest mode, 4 pi / sqrt((K_s + 4 K_int) / m): twice the
   // longest slip a run of one or two blocks makes undisturbed (half a period of its slowest
   // mode, at most one period of the fastest). Fixed before it was measured (paper/choices.md).
-  double promote_age() const { return promote_age_; }
+  double promote_age() const { return rules_.promote_age; }
 
   // The earliest closed-form or modal event; with recheck set it is not an event: a modal
   // search was cut off there, call recheck() at its time.
@@ -138,30 +138,30 @@ class ActiveSet {
   // The kind of run r at s.t, given the previous classification in kind_ and modal_.
   Kind classify(const Run& r, const State& s, const std::uint8_t* touched);
   // Set run r's kind in kind_ (its blocks); a run that becomes modal is registered, projected
-  // afresh (fresh_), and a settled one gets its record on its path. The caller drops a modal run
+  // afresh (fresh_.block), and a settled one gets its record on its path. The caller drops a modal run
   // that stops being one (drop_old).
   void assign(const Chain& c, const State& s, Run& r, Kind kind);
   // Mark run r projected afresh at this classification; forget the marks of the previous one.
   void set_fresh(BlockRange r);
   void clear_fresh();
-  // update()'s steps: the stretches a switch of the listed blocks can have changed (regions_);
+  // update()'s steps: the stretches a switch of the listed blocks can have changed (work_.regions);
   // the runs in one of them found and classified again; the grooves-only runs elsewhere whose
-  // kind changes with time; the blocks whose event time may have changed (cand_).
+  // kind changes with time; the blocks whose event time may have changed (work_.cand).
   void find_regions(const Chain& c, const State& s, const std::vector<int>& touched_list);
   void renew_region(const Chain& c, const State& s, const std::uint8_t* touched, BlockRange region);
   void retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched);
   void collect_candidates(const State& s, const std::uint8_t* touched);
-  // The new event times of the blocks in cand_ (every contact block's when all is set), then
-  // the previous classification is forgotten (dir_prev_, kind_prev_ where it changed).
+  // The new event times of the blocks in work_.cand (every contact block's when all is set), then
+  // the previous classification is forgotten (prev_.dir, prev_.kind where it changed).
   void update_events(const Chain& c, const State& s, const std::uint8_t* touched, bool all);
   // Block i (or nothing, outside the chain) switched since the last classification.
   bool switched(const State& s, const std::uint8_t* touched, int i) const;
   // Nothing in r or beside it switched.
   bool untouched(const State& s, const std::uint8_t* touched, BlockRange r) const;
-  // Fill stepped_ and watched_ from runs_.
+  // Fill list_.stepped and list_.watched from runs_.
   void list_stepped(const State& s);
   // After run r changed kind with time (settled, or promoted to modal): its stuck contact
-  // borders without an event time get one, closed form or queued for a modal search (pending_).
+  // borders without an event time get one, closed form or queued for a modal search (work_.pending).
   void renew_borders(const Chain& c, const State& s, BlockRange r);
   // Run r leaves the classification: its modal run or settled record is let go.
   void drop_old(const Run& r);
@@ -170,44 +170,66 @@ class ActiveSet {
   // The event time of stuck block i when it needs no modal search (watched: none here;
   // otherwise closed form). Returns false if it borders a modal run (search it instead).
   bool refresh_stuck(const Chain& c, const State& s, int i);
-  bool any_modal() const { return modal_max_ > 0 || modal_max_groove_ > 0; }
+  bool any_modal() const { return rules_.modal_max > 0 || rules_.modal_max_groove > 0; }
   // Modal event search of block i up to limit (stop if sliding, threshold crossing if stuck).
   void search_modal(const Chain& c, const State& s, int i, double limit);
   // Refresh the event queue, then the pending modal searches, each limited by the earliest
   // event so far.
   void finish_events(const Chain& c, const State& s);
 
-  int N_;
-  double K_int_;
-  bool settle_grooves_;
-  int modal_max_;         // longest modal run holding a contact block
-  int modal_max_groove_;  // longest modal grooves-only run
-  double promote_age_;    // promote_age()
-  double next_promotion_ = std::numeric_limits<double>::infinity();  // list_stepped
-  double t_end_;
-  ModalRuns modal_;
+  // What the classification follows, fixed for the run.
+  struct Rules {
+    double K_int;
+    bool settle_grooves;
+    int modal_max;         // longest modal run holding a contact block
+    int modal_max_groove;  // longest modal grooves-only run
+    double promote_age;    // promote_age()
+    double eps_u, eps_v;   // the settle scales
+    double t_end;
+  };
   // s.dir and kind_ at the previous classification. Between classifications they equal s.dir and
-  // kind_ (retire_settled keeps kind_prev_ along), so only the blocks a classification changes
-  // differ while it runs.
-  std::vector<std::int8_t> dir_prev_;
-  std::vector<std::uint8_t> kind_prev_;
-  double eps_u_, eps_v_;
+  // kind_ (retire_settled keeps kind along), so only the blocks a classification changes differ
+  // while it runs.
+  struct Previous {
+    std::vector<std::int8_t> dir;
+    std::vector<std::uint8_t> kind;
+  };
+  // What list_stepped finds: the stepped runs, the blocks whose events a step searches, the
+  // runs_ indices of stepped grooves-only runs, the earliest time a short run is due promotion.
+  struct Listing {
+    std::vector<BlockRange> stepped;
+    std::vector<int> watched;
+    std::vector<int> ringing;
+    double next_promotion = std::numeric_limits<double>::infinity();
+  };
+  // The runs projected afresh at this classification: per block, and the runs (to clear the
+  // marks at the next one).
+  struct Fresh {
+    std::vector<std::uint8_t> block;
+    std::vector<BlockRange> runs;
+  };
+  // update()'s work lists.
+  struct Work {
+    std::vector<int> pending;         // blocks whose modal search is due
+    std::vector<int> done;            // materialise_near: modal runs written (first blocks)
+    std::vector<int> cand;            // blocks whose event time may have changed
+    std::vector<int> switched;        // the switched blocks in block order
+    std::vector<BlockRange> regions;  // the stretches renewed, in block order
+    std::vector<BlockRange> retimed;  // runs outside them whose kind changed with time
+    std::vector<Run> found;           // the runs found in one region
+  };
+  int N() const { return static_cast<int>(kind_.size()); }
+
+  Rules rules_;
+  ModalRuns modal_;
+  Previous prev_;
   std::vector<std::uint8_t> kind_;
   std::vector<Run> runs_;
-  std::vector<BlockRange> stepped_;
-  std::vector<int> watched_;
-  RunStore& store_;                    // the settled and modal runs' records
-  EventQueue events_;                  // per contact block: next closed-form or modal event (inf if none / watched)
-  std::vector<std::uint8_t> fresh_;    // per block: in a modal run projected afresh at this classification
-  std::vector<BlockRange> fresh_runs_;  // those runs (to clear fresh_ at the next one)
-  std::vector<int> pending_;           // blocks whose modal search is due
-  std::vector<int> done_;              // materialise_near: modal runs written (first blocks)
-  std::vector<int> cand_;              // blocks whose event time may have changed
-  std::vector<int> switched_;          // update: the switched blocks in block order
-  std::vector<BlockRange> regions_;    // update: the stretches renewed, in block order
-  std::vector<BlockRange> retimed_;    // update: runs outside them whose kind changed with time
-  std::vector<Run> found_;             // update: the runs found in one region
-  std::vector<int> ringing_;           // runs_ indices of stepped grooves-only runs (list_stepped)
+  Listing list_;
+  RunStore& store_;    // the settled and modal runs' records
+  EventQueue events_;  // per contact block: next closed-form or modal event (inf if none / watched)
+  Fresh fresh_;
+  Work work_;
 };
 
 }  // namespace sb::event_detail

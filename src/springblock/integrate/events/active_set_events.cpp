@@ -12,43 +12,43 @@ namespace sb::event_detail {
 // Closed-form crossings and the kept modal events first, then the fresh modal searches
 // (finish_events).
 void ActiveSet::update_events(const Chain& c, const State& s, const std::uint8_t* touched, bool all) {
-  pending_.clear();
+  work_.pending.clear();
   if (all) {
-    cand_.resize(N_);
-    for (int i = 0; i < N_; ++i) cand_[i] = i;
+    work_.cand.resize(N());
+    for (int i = 0; i < N(); ++i) work_.cand[i] = i;
   } else {
     collect_candidates(s, touched);
   }
-  for (int i : cand_) {
+  for (int i : work_.cand) {
     if (!c.contact[i] || (s.dir[i] != 0 && kind_[i] != kModal)) {
       events_.set(i, kInf, false);
     } else if (s.dir[i] != 0) {
-      if (fresh_[i]) events_.set(i, kInf, false), pending_.push_back(i);
+      if (fresh_.block[i]) events_.set(i, kInf, false), work_.pending.push_back(i);
     } else {
       // A stuck block keeps its event time unless something next to it changed: it does not
       // move, nor do its stuck neighbours, and a settled or kept modal neighbour follows the
       // same path as when the time was found.
       bool changed = all || switched(s, touched, i) || switched(s, touched, i - 1) ||
-                     switched(s, touched, i + 1) || kind_prev_[i] != kStuck;
+                     switched(s, touched, i + 1) || prev_.kind[i] != kStuck;
       for (int j : {i - 1, i + 1})
-        if (j >= 0 && j < N_) changed = changed || kind_[j] != kind_prev_[j] || fresh_[j];
-      if (changed && !refresh_stuck(c, s, i)) pending_.push_back(i);
+        if (j >= 0 && j < N()) changed = changed || kind_[j] != prev_.kind[j] || fresh_.block[j];
+      if (changed && !refresh_stuck(c, s, i)) work_.pending.push_back(i);
     }
   }
   // The previous classification is forgotten: every block whose dir or kind changed is a
   // candidate.
-  for (int i : cand_) dir_prev_[i] = s.dir[i], kind_prev_[i] = kind_[i];
+  for (int i : work_.cand) prev_.dir[i] = s.dir[i], prev_.kind[i] = kind_[i];
   finish_events(c, s);
 }
 
 bool ActiveSet::beside_modal(int i) const {
-  return K_int_ > 0 && ((i > 0 && kind_[i - 1] == kModal) || (i + 1 < N_ && kind_[i + 1] == kModal));
+  return rules_.K_int > 0 && ((i > 0 && kind_[i - 1] == kModal) || (i + 1 < N() && kind_[i + 1] == kModal));
 }
 
 bool ActiveSet::refresh_stuck(const Chain& c, const State& s, int i) {
-  if (K_int_ > 0)
+  if (rules_.K_int > 0)
     for (int j : {i - 1, i + 1})
-      if (j >= 0 && j < N_ && kind_[j] == kStepped) {
+      if (j >= 0 && j < N() && kind_[j] == kStepped) {
         events_.set(i, kInf, false);  // watched: the step's dense output finds its crossing
         return true;
       }
@@ -63,12 +63,12 @@ bool ActiveSet::refresh_stuck(const Chain& c, const State& s, int i) {
 void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit) {
   ModalRuns::Found f;
   if (s.dir[i] != 0) {
-    f = modal_.stop_time(c, s, i, fresh_[i] != 0, limit);
+    f = modal_.stop_time(c, s, i, fresh_.block[i] != 0, limit);
   } else {
     double base[2] = {0, 0}, nb_B[2] = {0, 0};
     for (int side = 0; side < 2; ++side) {
       const int j = side == 0 ? i - 1 : i + 1;
-      if (j < 0 || j >= N_) continue;
+      if (j < 0 || j >= N()) continue;
       if (kind_[j] == kSettled) base[side] = settled_u(j, s.t), nb_B[side] = store_.B(j);
       else base[side] = s.u[j];
     }
@@ -82,36 +82,36 @@ void ActiveSet::finish_events(const Chain& c, const State& s) {
   // Each fresh modal search goes only as far as the earliest event known so far: most of them
   // never become the next event, and one cut off is searched again when it does (recheck()).
   events_.refresh();
-  for (int i : pending_) {
+  for (int i : work_.pending) {
     // Limited by the earliest real event (not a recheck), so a recheck always makes progress.
-    search_modal(c, s, i, std::min(events_.next_real(), t_end_));
+    search_modal(c, s, i, std::min(events_.next_real(), rules_.t_end));
     events_.offer(i);
   }
-  pending_.clear();
+  work_.pending.clear();
 }
 
 void ActiveSet::recheck(const Chain& c, const State& s) {
   const int i = events_.next().block;
   events_.set(i, kInf, false);
-  fresh_[i] = 0;
-  pending_.assign(1, i);
+  fresh_.block[i] = 0;
+  work_.pending.assign(1, i);
   finish_events(c, s);
 }
 
 void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
   double a = c.K_s * (c.v_slider * s.t - s.u[i]), b = c.K_s * c.v_slider;
-  if (K_int_ > 0) {
+  if (rules_.K_int > 0) {
     for (int j : {i - 1, i + 1}) {
-      if (j < 0 || j >= N_) continue;
+      if (j < 0 || j >= N()) continue;
       if (kind_[j] == kStepped) {  // watched instead: its force is not affine
         events_.set(i, kInf, false);
         return;
       }
       if (kind_[j] == kSettled) {
-        a += K_int_ * (settled_u(j, s.t) - s.u[i]);
-        b += K_int_ * store_.B(j);
+        a += rules_.K_int * (settled_u(j, s.t) - s.u[i]);
+        b += rules_.K_int * store_.B(j);
       } else {
-        a += K_int_ * (s.u[j] - s.u[i]);
+        a += rules_.K_int * (s.u[j] - s.u[i]);
       }
     }
   }
@@ -126,13 +126,13 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
 }
 
 bool ActiveSet::retire_settled(const Chain& c, const State& s) {
-  if (!settle_grooves_) return false;
+  if (!rules_.settle_grooves) return false;
   bool changed = false;
-  for (int k : ringing_) {
+  for (int k : list_.ringing) {
     Run& r = runs_[k];
     if (!settled_now(s, r.span)) continue;
     assign(c, s, r, kSettled);
-    for (int i = r.span.lo; i < r.span.hi; ++i) kind_prev_[i] = kSettled;
+    for (int i = r.span.lo; i < r.span.hi; ++i) prev_.kind[i] = kSettled;
     changed = true;
   }
   if (!changed) return false;
@@ -146,23 +146,23 @@ bool ActiveSet::retire_settled(const Chain& c, const State& s) {
 
 void ActiveSet::renew_borders(const Chain& c, const State& s, BlockRange r) {
   for (int i : {r.lo - 1, r.hi})
-    if (i >= 0 && i < N_ && c.contact[i] && s.dir[i] == 0 && events_.time(i) == kInf && !refresh_stuck(c, s, i))
-      pending_.push_back(i);
+    if (i >= 0 && i < N() && c.contact[i] && s.dir[i] == 0 && events_.time(i) == kInf && !refresh_stuck(c, s, i))
+      work_.pending.push_back(i);
 }
 
 bool ActiveSet::promote_runs(const Chain& c, const State& s) {
-  if (!(s.t >= next_promotion_)) return false;
+  if (!(s.t >= list_.next_promotion)) return false;
   bool changed = false;
   for (Run& r : runs_) {
-    if (r.kind != kStepped || r.grooves || r.span.hi - r.span.lo > modal_max_ || s.t < r.formed + promote_age_)
+    if (r.kind != kStepped || r.grooves || r.span.hi - r.span.lo > rules_.modal_max || s.t < r.formed + rules_.promote_age)
       continue;
-    // As a classification would treat a run that becomes modal: projected afresh (fresh_), its
+    // As a classification would treat a run that becomes modal: projected afresh (fresh_.block), its
     // sliding blocks' stops and its stuck neighbours' crossings searched anew.
     assign(c, s, r, kModal);
-    std::fill(kind_prev_.begin() + r.span.lo, kind_prev_.begin() + r.span.hi, kModal);
+    std::fill(prev_.kind.begin() + r.span.lo, prev_.kind.begin() + r.span.hi, kModal);
     changed = true;
     for (int i = r.span.lo; i < r.span.hi; ++i)
-      if (c.contact[i] && s.dir[i] != 0) events_.set(i, kInf, false), pending_.push_back(i);
+      if (c.contact[i] && s.dir[i] != 0) events_.set(i, kInf, false), work_.pending.push_back(i);
     renew_borders(c, s, r.span);  // they were watched beside it, so they have no event time
   }
   list_stepped(s);

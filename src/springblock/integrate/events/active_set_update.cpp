@@ -21,7 +21,7 @@ void ActiveSet::update(const Chain& c, const State& s, const std::uint8_t* touch
                        const std::vector<int>& touched_list) {
   clear_fresh();
   find_regions(c, s, touched_list);
-  for (const BlockRange& region : regions_) renew_region(c, s, touched, region);
+  for (const BlockRange& region : work_.regions) renew_region(c, s, touched, region);
   retime_grooves(c, s, touched);
   list_stepped(s);
   update_events(c, s, touched, false);
@@ -32,21 +32,21 @@ void ActiveSet::update(const Chain& c, const State& s, const std::uint8_t* touch
 // switch on both sides: the blocks just outside are stuck before and after, so every run, old or
 // new, lies inside a region or outside all of them. Overlapping regions are merged.
 void ActiveSet::find_regions(const Chain& c, const State& s, const std::vector<int>& touched_list) {
-  regions_.clear();
-  switched_.assign(touched_list.begin(), touched_list.end());
-  std::sort(switched_.begin(), switched_.end());
-  auto mobile_either = [&](int i) { return !c.contact[i] || s.dir[i] != 0 || dir_prev_[i] != 0; };
-  for (int b : switched_) {
-    if (!regions_.empty() && b < regions_.back().hi) continue;
+  work_.regions.clear();
+  work_.switched.assign(touched_list.begin(), touched_list.end());
+  std::sort(work_.switched.begin(), work_.switched.end());
+  auto mobile_either = [&](int i) { return !c.contact[i] || s.dir[i] != 0 || prev_.dir[i] != 0; };
+  for (int b : work_.switched) {
+    if (!work_.regions.empty() && b < work_.regions.back().hi) continue;
     int lo = b, hi = b + 1;
-    if (K_int_ > 0) {
+    if (rules_.K_int > 0) {
       while (lo > 0 && mobile_either(lo - 1)) --lo;
-      while (hi < N_ && mobile_either(hi)) ++hi;
+      while (hi < N() && mobile_either(hi)) ++hi;
     }
-    if (!regions_.empty() && lo <= regions_.back().hi)
-      regions_.back().hi = std::max(regions_.back().hi, hi);
+    if (!work_.regions.empty() && lo <= work_.regions.back().hi)
+      work_.regions.back().hi = std::max(work_.regions.back().hi, hi);
     else
-      regions_.push_back({lo, hi});
+      work_.regions.push_back({lo, hi});
   }
 }
 
@@ -56,38 +56,38 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
   auto by_start = [](const Run& r, int i) { return r.span.lo < i; };
   const auto first = std::lower_bound(runs_.begin(), runs_.end(), region.lo, by_start);
   const auto last = std::lower_bound(first, runs_.end(), region.hi, by_start);
-  found_.clear();
-  find_runs(c, s, region.lo, region.hi, found_);
+  work_.found.clear();
+  find_runs(c, s, region.lo, region.hi, work_.found);
   // classify() reads the previous kinds, so every new kind is decided before any is written.
-  for (Run& r : found_) r.kind = classify(r, s, touched);
+  for (Run& r : work_.found) r.kind = classify(r, s, touched);
   // A settled run found again as the same settled run keeps its record: its ends have been stuck
   // since it was made (a switch of one would have merged it into a larger run), so its path is
   // still the one recorded. Every other old run lets its record go.
   for (auto it = first; it != last; ++it) {
-    const auto again = std::lower_bound(found_.begin(), found_.end(), it->span.lo, by_start);
-    const bool kept = it->kind == kSettled && again != found_.end() && again->span.lo == it->span.lo &&
+    const auto again = std::lower_bound(work_.found.begin(), work_.found.end(), it->span.lo, by_start);
+    const bool kept = it->kind == kSettled && again != work_.found.end() && again->span.lo == it->span.lo &&
                       again->span.hi == it->span.hi && again->kind == kSettled;
     if (!kept) drop_old(*it);
   }
   std::fill(kind_.begin() + region.lo, kind_.begin() + region.hi, kStuck);
-  for (Run& r : found_) assign(c, s, r, r.kind);
+  for (Run& r : work_.found) assign(c, s, r, r.kind);
   const auto at = runs_.erase(first, last);
-  runs_.insert(at, found_.begin(), found_.end());
+  runs_.insert(at, work_.found.begin(), work_.found.end());
 }
 
 // Outside the regions only a grooves-only run that is modal or ringing can change kind, with time.
 void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched) {
-  retimed_.clear();
+  work_.retimed.clear();
   std::size_t g = 0;  // the first region not before the run
   for (Run& r : runs_) {
-    while (g < regions_.size() && regions_[g].hi <= r.span.lo) ++g;
-    if (g < regions_.size() && regions_[g].lo <= r.span.lo) continue;  // renewed
+    while (g < work_.regions.size() && work_.regions[g].hi <= r.span.lo) ++g;
+    if (g < work_.regions.size() && work_.regions[g].lo <= r.span.lo) continue;  // renewed
     if (!r.grooves || (r.kind != kModal && r.kind != kStepped)) continue;
     const Kind kind = classify(r, s, touched);
     if (kind == r.kind) continue;
     drop_old(r);
     assign(c, s, r, kind);
-    retimed_.push_back(r.span);
+    work_.retimed.push_back(r.span);
   }
 }
 
@@ -96,20 +96,20 @@ void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_
 // they are visited, in index order as rebuild's pass over every block would. They all lie in the
 // regions and the retimed runs (two lists in block order, disjoint).
 void ActiveSet::collect_candidates(const State& s, const std::uint8_t* touched) {
-  cand_.clear();
+  work_.cand.clear();
   int last = -1;
   auto visit = [&](BlockRange r) {
     for (int i = r.lo; i < r.hi; ++i) {
-      if (s.dir[i] == dir_prev_[i] && kind_[i] == kind_prev_[i] && !fresh_[i] && !touched[i]) continue;
-      for (int j = std::max(i - 1, last + 1); j <= std::min(i + 1, N_ - 1); ++j) cand_.push_back(j), last = j;
+      if (s.dir[i] == prev_.dir[i] && kind_[i] == prev_.kind[i] && !fresh_.block[i] && !touched[i]) continue;
+      for (int j = std::max(i - 1, last + 1); j <= std::min(i + 1, N() - 1); ++j) work_.cand.push_back(j), last = j;
     }
   };
   std::size_t a = 0, b = 0;
-  while (a < regions_.size() || b < retimed_.size()) {
-    if (b == retimed_.size() || (a < regions_.size() && regions_[a].lo < retimed_[b].lo))
-      visit(regions_[a++]);
+  while (a < work_.regions.size() || b < work_.retimed.size()) {
+    if (b == work_.retimed.size() || (a < work_.regions.size() && work_.regions[a].lo < work_.retimed[b].lo))
+      visit(work_.regions[a++]);
     else
-      visit(retimed_[b++]);
+      visit(work_.retimed[b++]);
   }
 }
 
