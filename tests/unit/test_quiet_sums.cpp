@@ -13,6 +13,7 @@
 #include "hand_chain.hpp"
 #include "springblock/integrate/linear/common_slope_sum.hpp"
 #include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/linear/quiet_sums.hpp"
 #include "springblock/state.hpp"
 
 namespace {
@@ -110,6 +111,7 @@ TEST(QuietPhaseSums, EqualTheWrittenRowsForces) {
   const int N = c.N;
   sb::event_detail::RunStore q_store(c);
   sb::event_detail::QuietPhase q(c, q_store);
+  sb::event_detail::QuietSums q_sums(q);
   const double dt = 1e-5;
   q.set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);
@@ -124,7 +126,7 @@ TEST(QuietPhaseSums, EqualTheWrittenRowsForces) {
     row.t = s.t + k * dt;
     q.advance_sample(row.t, true);
     double sum_abs, sum_signed;
-    q.friction_sums(row.t, sum_abs, sum_signed);
+    q_sums.at(row.t, sum_abs, sum_signed);
     q.write_sample(row.t, row.u.data(), row.v.data(), true);
     double abs_ref, signed_ref;
     sums_from_rows(c, row, abs_ref, signed_ref);
@@ -153,6 +155,7 @@ WindowCounts window_sums_against_one_by_one(const std::vector<std::uint8_t>& paw
   const int N = c.N;
   sb::event_detail::RunStore q_store(c), ref_store(c);
   sb::event_detail::QuietPhase q(c, q_store), ref(c, ref_store);
+  sb::event_detail::QuietSums q_sums(q), ref_sums(ref);
   for (auto* p : {&q, &ref}) {
     p->set_sample_dt(dt);
     p->set_sample_scales(1e-14, 1e-10);
@@ -166,7 +169,7 @@ WindowCounts window_sums_against_one_by_one(const std::vector<std::uint8_t>& paw
   sb::State row = s;
   for (long k0 = 1000; k0 < 1000 + 40 * n; k0 += n) {  // 25 ms: ringing, cut, affine
     double sum_abs, sum_signed;
-    const bool ok = q.window_sums(k0, dt, n, sum_abs, sum_signed);
+    const bool ok = q_sums.window(k0, dt, n, sum_abs, sum_signed);
     double abs_ref = 0, signed_ref = 0;
     std::vector<int> sign(N, 0);
     bool sign_kept = true, interior_kept = true;  // every force keeps one sign over the block
@@ -174,7 +177,7 @@ WindowCounts window_sums_against_one_by_one(const std::vector<std::uint8_t>& paw
       row.t = static_cast<double>(k) * dt;
       ref.advance_sample(row.t, true);
       double x, y;
-      ref.friction_sums(row.t, x, y);
+      ref_sums.at(row.t, x, y);
       abs_ref += x, signed_ref += y;
       ref.write_sample(row.t, row.u.data(), row.v.data(), true);
       for (int i = 0; i < N; ++i) {
@@ -199,7 +202,7 @@ WindowCounts window_sums_against_one_by_one(const std::vector<std::uint8_t>& paw
     // Sampling other times in between changes nothing.
     q.advance_sample(static_cast<double>(k0 + 3) * dt, true);
     double again_abs, again_signed;
-    EXPECT_TRUE(q.window_sums(k0, dt, n, again_abs, again_signed));
+    EXPECT_TRUE(q_sums.window(k0, dt, n, again_abs, again_signed));
     EXPECT_EQ(again_abs, sum_abs);
     EXPECT_EQ(again_signed, sum_signed);
   }
@@ -238,6 +241,7 @@ TEST(QuietPhaseSums, EnvelopeHoldsEverySampleOfItsStretch) {
   const sb::State& s = sc.s;
   sb::event_detail::RunStore q_store(c);
   sb::event_detail::QuietPhase q(c, q_store);
+  sb::event_detail::QuietSums q_sums(q);
   q.set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);
   q.begin(c, s.t, s.u.data(), s.v.data());
@@ -245,14 +249,14 @@ TEST(QuietPhaseSums, EnvelopeHoldsEverySampleOfItsStretch) {
   int taken = 0, refused = 0, tight = 0;
   for (long k0 = 1001; k0 < 1001 + 100 * n; k0 += n) {
     sb::SampleStretch::Envelope e{};
-    const bool ok = q.envelope(k0, dt, n, e);
+    const bool ok = q_sums.envelope(k0, dt, n, e);
     bool refused_here = !ok;
     for (long j = 0; j < n; ++j) {
       const double t = static_cast<double>(k0 + j) * dt;
       q.advance_sample(t, true);
       if (refused_here) continue;
       double x, y;
-      q.friction_sums(t, x, y);
+      q_sums.at(t, x, y);
       const double w = static_cast<double>(j) / static_cast<double>(n - 1);
       EXPECT_LE(std::fabs(x - (e.abs_first + (e.abs_last - e.abs_first) * w)), e.reach) << "sample " << k0 + j;
       EXPECT_LE(std::fabs(y - (e.signed_first + (e.signed_last - e.signed_first) * w)), e.reach) << "sample " << k0 + j;

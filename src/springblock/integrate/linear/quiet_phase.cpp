@@ -18,7 +18,7 @@ double affine_crossing(double a, double b, double f) {
 }  // namespace
 
 QuietPhase::QuietPhase(const Chain& c, RunStore& store)
-    : K_int_(c.K_int), slider_slope_(c.K_s * c.v_slider), store_(store), still_(c.N, 0) {
+    : K_int_(c.K_int), slider_slope_(c.K_s * c.v_slider), store_(store), cursor_{{0, Coords(c.N)}, false}, kept_(cursor_) {
   const int N = c.N;
   for (int i = 0; i < N;) {
     if (c.contact[i]) {
@@ -57,19 +57,13 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
         for (int k = 0; k < s.n; ++k) e.march.add_mode(K_int_ * row[k], s.shape->modes[k], s.first + k);
       }
       e.march.finish();
-      edges_.push_back(std::move(e));
+      edges_.list.push_back(std::move(e));
     } else {
-      affine_blocks_.push_back(j);
+      interior_.blocks.push_back(j);
     }
   }
-  affine_a_.resize(affine_blocks_.size());
-  qs_.resize(N);
-  qds_.resize(N);
-  end_dots_.resize(2 * segs_.size());
-  end_bound_.resize(2 * segs_.size());
-  slot_.resize(segs_.size());
-  for (auto* w : {&wq_, &wp_, &wq1_, &wp1_}) w->resize(N);
-  order_.resize(edges_.size());
+  interior_.a.resize(interior_.blocks.size());
+  edges_.order.resize(edges_.list.size());
 }
 
 // Segment s's record at t0: kept where the active set holds it (a settled run is on its path, a
@@ -81,7 +75,7 @@ void QuietPhase::take_record(const Chain& c, const GrooveRun& s, const double* u
     store_.rebase(s.first, t0_);
     return;
   }
-  store_.project(c, r, t0_, u, v, still_.data(), RunStore::kQuiet);
+  store_.project(c, r, t0_, u, v, nullptr, RunStore::kQuiet);
 }
 
 // Underdamped modes shrink at least like e^{-alpha tau} (amplitude and velocity amplitude); once
@@ -95,19 +89,20 @@ void QuietPhase::set_dead_times(GrooveRun& s) const {
   }
   const TransientEnvelope env = store_.envelope(store_.run(s.first));
   s.dead_tau = env.time_below(1e-17 * uscale, 1e-17 * vscale);
-  s.sample_dead_tau = std::min(s.dead_tau, env.time_below(sample_eps_u_, sample_eps_v_));
+  s.sample_dead_tau = std::min(s.dead_tau, env.time_below(scales_.u, scales_.v));
 }
 
 void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
   t0_ = t0;
-  sample_valid_ = false;
+  cursor_.valid = false;
+  ++interior_.phase;
   for (GrooveRun& s : segs_) {
     take_record(c, s, u, v);
     set_dead_times(s);
   }
-  for (std::size_t k = 0; k < affine_blocks_.size(); ++k)
-    affine_a_[k] = c.driving_force(affine_blocks_[k], u, v, t0);
-  for (Edge& e : edges_) {
+  for (std::size_t k = 0; k < interior_.blocks.size(); ++k)
+    interior_.a[k] = c.driving_force(interior_.blocks[k], u, v, t0);
+  for (Edge& e : edges_.list) {
     double a = c.driving_force(e.block, u, v, t0), b = c.K_s * c.v_slider;
     for (int n = 0; n < e.nseg; ++n) {
       const GrooveRun& s = segs_[e.seg[n]];
@@ -118,7 +113,6 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
     e.march.set_affine(a, b);
     e.fa = a, e.fb = b;
   }
-  interior_ready_ = false;
 }
 
 void QuietPhase::release() {
@@ -151,15 +145,15 @@ void QuietPhase::affine_forces(const Chain& c, const double* u, double* a, doubl
 QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
   double best = t_limit - t0_;
   int block = -1;
-  for (std::size_t k = 0; k < affine_blocks_.size(); ++k) {
-    const int j = affine_blocks_[k];
-    const double tau = affine_crossing(affine_a_[k], c.K_s * c.v_slider, c.f_static[j]);
+  for (std::size_t k = 0; k < interior_.blocks.size(); ++k) {
+    const int j = interior_.blocks[k];
+    const double tau = affine_crossing(interior_.a[k], c.K_s * c.v_slider, c.f_static[j]);
     if (tau < best) best = tau, block = j;
   }
   // Search the edges likeliest to cross first first: each search stops at the best time so far.
   // An edge whose segments have no modes (settled grooves) has an affine force: closed form.
-  for (std::size_t k = 0; k < edges_.size(); ++k) {
-    Edge& e = edges_[k];
+  for (std::size_t k = 0; k < edges_.list.size(); ++k) {
+    Edge& e = edges_.list[k];
     bool modes = false;
     for (int n = 0; n < e.nseg; ++n) modes = modes || segs_[e.seg[n]].dead_tau > 0;
     if (!modes) {
@@ -169,11 +163,11 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
     } else {
       e.lower = e.march.lower_bound(store_.q0(), store_.p0(), c.f_static[e.block]);
     }
-    order_[k] = static_cast<int>(k);
+    edges_.order[k] = static_cast<int>(k);
   }
-  std::sort(order_.begin(), order_.end(), [&](int x, int y) { return edges_[x].lower < edges_[y].lower; });
-  for (int k : order_) {
-    Edge& e = edges_[k];
+  std::sort(edges_.order.begin(), edges_.order.end(), [&](int x, int y) { return edges_.list[x].lower < edges_.list[y].lower; });
+  for (int k : edges_.order) {
+    Edge& e = edges_.list[k];
     if (e.lower > best) break;
     const double tau = e.march.first_crossing(store_.q0(), store_.p0(), c.f_static[e.block], best, t0_);
     if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;

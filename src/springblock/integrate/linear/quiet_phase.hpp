@@ -23,19 +23,39 @@
 // Samples inside a quiet phase are served by sample(): the modal coordinates are advanced from
 // the previous sample by each mode's exact transition matrix over the sample spacing (no
 // transcendental calls), and segments whose modes have died out cost only their affine part.
+// What the phase knows of the contact blocks' forces at its samples (each an affine part plus
+// its segments' end rows) is summed in closed form by QuietSums (quiet_sums.hpp).
 #include <cstdint>
 #include <vector>
 
-#include "springblock/integrate/linear/common_slope_sum.hpp"
+#include "springblock/integrate/linear/coords.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
-#include "springblock/observe/observer.hpp"
 
 namespace sb::event_detail {
 
 class QuietPhase {
  public:
+  // A maximal run of grooves between stuck blocks or chain ends.
+  struct GrooveRun {
+    int first, n;
+    const RunShape* shape;
+    bool left_stuck, right_stuck;
+    double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
+    double sample_dead_tau = 0;  // after this they are below the sample scales (samples skip them)
+  };
+  // A contact block and the segments it borders: its force is a + b tau + modal part.
+  struct Edge {
+    int block;
+    int nseg = 0;
+    int seg[2] = {-1, -1};
+    int row[2] = {0, 0};  // the segment's row of the groove block beside it
+    EdgeMarch march;
+    double lower = 0;  // lower bound on its crossing in the current phase
+    double fa = 0, fb = 0;  // its force less the modal part: fa + fb tau (begin)
+  };
+
   QuietPhase(const Chain& c, RunStore& store);
 
   // Start a quiet phase at time t0 from positions u and velocities v (every contact block
@@ -59,38 +79,15 @@ class QuietPhase {
   // The recurrence restarts from the closed form at the phase's first sample, after a gap in
   // the spacing, and at every sample whose index is a multiple of kSampleBlock: a sample's value
   // then depends only on its index and the phase, not on which samples were served before it
-  // (window_sums may stand in for a whole block of them).
+  // (QuietSums::window may stand in for a whole block of them).
   static constexpr long kSampleBlock = 64;
   void advance_sample(double t, bool ends_only);
   void write_sample(double t, double* u, double* v, bool ends_only);
-  // For an observer of mu(t) alone, after advance_sample(t, true): the sums over the contact
-  // blocks of |f_i| and f_i at t, without writing a row. The blocks with no groove neighbour have
-  // one affine force each and cost O(1) together (CommonSlopeSum); a block beside a groove adds
-  // its segments' end rows' modes (the settle-scale cut of ends_only samples applies). Rounds
-  // differently from summing the forces of the written rows, not otherwise different.
-  void friction_sums(double t, double& sum_abs, double& sum_signed);
-  // The same two sums added over the n samples at t_k = k dt, k = k0 .. k0 + n - 1: in closed
-  // form for every contact block's force that cannot change sign over them (each |f_i| is then
-  // +-f_i, and f_i is affine plus modes, whose sum over equally spaced samples is a geometric
-  // series: RunShape::sample_sum), sample by sample for a force beside a groove whose sign the
-  // bounds cannot fix (its segments' end rows by the sample recurrence; the other segments are
-  // not visited). Costs two direct evaluations of each live mode instead of a recurrence step and
-  // a dot product per mode and sample. The modes are cut where samples cut them
-  // (sample_dead_tau), so the sums are those of friction_sums over the same samples up to
-  // round-off. A force beside no groove is affine with the slider's slope and crosses zero at a
-  // known time: the samples on either side of it are summed apart. False (nothing summed) when a
-  // mode has no closed-form sum. Leaves the sample cursor alone; the sums depend on k0 and n
-  // only, not on what was sampled before.
-  bool window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
-  // For an observer of the loading peak: bounds on the friction sums friction_sums gives at the
-  // samples k0 .. k0 + n - 1 (SampleStretch::Envelope), when no contact block's force can change
-  // sign over them; false otherwise. Leaves the sample cursor alone.
-  bool envelope(long k0, double dt, long n, SampleStretch::Envelope& env);
   // The sample cursor (advance_sample's modes and time) kept and put back, for samples an
   // observer looked at inside a stretch it then declined: the samples served one by one after it
   // see the cursor they would have seen without the offer.
-  void save_cursor();
-  void restore_cursor();
+  void save_cursor() { kept_ = cursor_; }
+  void restore_cursor() { cursor_ = kept_; }  // a copy: the kept cursor may be needed again
 
   struct Next {
     double t;   // event time, or t_limit when no stuck block reaches its threshold before it
@@ -106,7 +103,7 @@ class QuietPhase {
   // set's settle scales (0.1 x the stepper's absolute tolerances), so a sample's forces carry at
   // most K_int eps_u per contact block beside a groove. The dynamics (evaluate, next_threshold)
   // keeps them to round-off. Without this call samples keep them to round-off too.
-  void set_sample_scales(double eps_u, double eps_v) { sample_eps_u_ = eps_u, sample_eps_v_ = eps_v; }
+  void set_sample_scales(double eps_u, double eps_v) { scales_ = {eps_u, eps_v}; }
 
   // The time after which every segment's modes are below the sample scales: from then on every
   // groove block is on its affine path as far as samples go, and every contact block's force is
@@ -116,34 +113,43 @@ class QuietPhase {
   // positions u; grooves get 0), valid after all_dead_after().
   void affine_forces(const Chain& c, const double* u, double* a, double* b) const;
 
+  // What QuietSums reads: the phase's start, its segments (their records in the store), the
+  // contact blocks beside them (edges) and those beside none (each with its force at t0, all with
+  // the slider's slope K_s v), K_int, and the sample cursor.
+  double t0() const { return t0_; }
+  double K_int() const { return K_int_; }
+  double slider_slope() const { return slider_slope_; }
+  const RunStore& store() const { return store_; }
+  const std::vector<GrooveRun>& segments() const { return segs_; }
+  const std::vector<Edge>& edges() const { return edges_.list; }
+  const std::vector<double>& interior_forces() const { return interior_.a; }
+  const Coords& cursor() const { return cursor_.at.x; }
+  long phases() const { return interior_.phase; }  // phases begun so far
+
  private:
-  struct GrooveRun {
-    int first, n;
-    const RunShape* shape;
-    bool left_stuck, right_stuck;
-    double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
-    double sample_dead_tau = 0;  // after this they are below the sample scales (samples skip them)
+  struct Edges {
+    std::vector<Edge> list;
+    std::vector<int> order;  // by increasing lower bound (next_threshold)
   };
-  // A contact block and the segments it borders: its force is a + b tau + modal part.
-  struct Edge {
-    int block;
-    int nseg = 0;
-    int seg[2] = {-1, -1};
-    int row[2] = {0, 0};  // the segment's row of the groove block beside it
-    EdgeMarch march;
-    double lower = 0;  // lower bound on its crossing in the current phase
-    double fa = 0, fb = 0;  // its force less the modal part: fa + fb tau (begin)
+  // The contact blocks with no groove neighbour, their forces at t0, and how many phases began.
+  struct Interior {
+    std::vector<int> blocks;
+    std::vector<double> a;
+    long phase = 0;
+  };
+  struct Scales {
+    double u = 0, v = 0;
+  };
+  // advance_sample's modes and their time, and whether they hold a sample of this phase.
+  struct Cursor {
+    Moment at;
+    bool valid = false;
   };
 
   // begin()'s work per segment: its record at t0; the times after which its modes no longer
   // count.
   void take_record(const Chain& c, const GrooveRun& s, const double* u, const double* v);
   void set_dead_times(GrooveRun& s) const;
-  // window_sums' and envelope's test (quiet_phase_window.cpp), and an edge's modal reach.
-  bool keeps_signs(double tau0, double tau_last, bool need_sums);
-  // window_sums' share of the flagged edges: their forces summed sample by sample.
-  void unsure_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed);
-  double edge_reach(const Edge& e) const;
   // u, v of segment s at time t from its modal coordinates q, qd (slots; dead modes: its path),
   // every row or (ends_only) the rows beside a contact block.
   void write_segment(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
@@ -152,29 +158,11 @@ class QuietPhase {
   double K_int_ = 0, t0_ = 0;
   double slider_slope_ = 0;  // K_s v: the slope of every contact block's force in a quiet phase
   RunStore& store_;
-  std::vector<std::int8_t> still_;  // every groove's dir: 0
   std::vector<GrooveRun> segs_;
-  std::vector<Edge> edges_;
-  std::vector<int> affine_blocks_;     // contact blocks with no groove neighbour
-  std::vector<double> affine_a_;       // their force at t0
-  std::vector<double> qs_, qds_;  // per slot: modal coordinates at the last sample
-  std::vector<int> order_;        // edges by increasing lower bound
-  double ts_ = 0;
-  double sample_eps_u_ = 0, sample_eps_v_ = 0;
-  bool sample_valid_ = false;
-  std::vector<double> qs_kept_, qds_kept_;  // save_cursor
-  double ts_kept_ = 0;
-  bool sample_valid_kept_ = false;
-  CommonSlopeSum interior_;        // friction_sums: the contact blocks with no groove neighbour
-  bool interior_ready_ = false;    // interior_ holds this phase's forces
-  std::vector<double> end_dots_;   // friction_sums: per segment, first and last row . q
-  // Per slot, window_sums: modes at the first sample and past the last live one (and evaluate's
-  // scratch).
-  std::vector<double> wq_, wp_, wq1_, wp1_;
-  std::vector<double> end_bound_;  // window_sums: per segment, bounds on its first and last rows' modal part
-  std::vector<char> unsure_;        // window_sums: per edge, its sign not fixed by the bounds
-  std::vector<int> slot_;           // unsure_sums: per segment, its place in row_values_ (-1: none)
-  std::vector<double> row_values_;  // unsure_sums: those rows' modal parts, sample by sample
+  Edges edges_;
+  Interior interior_;
+  Scales scales_;
+  Cursor cursor_, kept_;
 };
 
 }  // namespace sb::event_detail

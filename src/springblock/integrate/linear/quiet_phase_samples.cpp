@@ -23,12 +23,16 @@ void QuietPhase::write_segment(const GrooveRun& s, double t, bool live, const do
   }
 }
 
+// The sample cursor's arrays serve as scratch: the phase's samples are over once it is evaluated
+// (at its end, or where the observer stops the run).
 void QuietPhase::evaluate(double t, double* u, double* v) {
   const double tau = t - t0_;
+  Coords& x = cursor_.at.x;
+  cursor_.valid = false;
   for (const GrooveRun& s : segs_) {
     const bool live = tau <= s.dead_tau;
-    if (live) store_.coords(store_.run(s.first), t, wq1_.data(), wp1_.data());
-    write_segment(s, t, live, wq1_.data(), wp1_.data(), u, v, false);
+    if (live) store_.coords(store_.run(s.first), t, x.q.data(), x.p.data());
+    write_segment(s, t, live, x.q.data(), x.p.data(), u, v, false);
   }
 }
 
@@ -44,58 +48,26 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
   // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
   // from that by round-off only. Restart from the closed form at every block start (header).
   const double dt = store_.shapes().sample_dt();
-  const bool step = sample_valid_ && dt > 0 && std::fabs((t - ts_) - dt) <= 1e-9 * dt &&
+  const bool step = cursor_.valid && dt > 0 && std::fabs((t - cursor_.at.t) - dt) <= 1e-9 * dt &&
                     std::llround(t / dt) % kSampleBlock != 0;
   for (const GrooveRun& s : segs_) {
     // An observer that reads only contact forces (ends_only) takes the modes as gone once they
     // are below the settle scales; one that reads every row gets them to round-off.
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
     if (!live) continue;
-    if (step) s.shape->step_sample(qs_.data() + s.first, qds_.data() + s.first);
-    else store_.coords(store_.run(s.first), t, qs_.data(), qds_.data());
+    Coords& x = cursor_.at.x;
+    if (step) s.shape->step_sample(x.q.data() + s.first, x.p.data() + s.first);
+    else store_.coords(store_.run(s.first), t, x.q.data(), x.p.data());
   }
-  ts_ = t;
-  sample_valid_ = true;
-}
-
-void QuietPhase::save_cursor() {
-  qs_kept_ = qs_, qds_kept_ = qds_;
-  ts_kept_ = ts_, sample_valid_kept_ = sample_valid_;
-}
-
-void QuietPhase::restore_cursor() {
-  qs_ = qs_kept_, qds_ = qds_kept_;  // copies: the kept cursor may be needed again
-  ts_ = ts_kept_, sample_valid_ = sample_valid_kept_;
+  cursor_.at.t = t;
+  cursor_.valid = true;
 }
 
 void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) {
   const double tau = t - t0_;
   for (const GrooveRun& s : segs_) {
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
-    write_segment(s, t, live, qs_.data(), qds_.data(), u, v, ends_only);
-  }
-}
-
-void QuietPhase::friction_sums(double t, double& sum_abs, double& sum_signed) {
-  const double tau = t - t0_;
-  if (!interior_ready_) {
-    // Every interior force has the slider's slope K_s v (next_threshold's affine crossings).
-    interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
-    interior_ready_ = true;
-  }
-  interior_.at(tau, sum_abs, sum_signed);
-  // The end rows' modal displacement of each live segment (dead ones: none, as in write_sample).
-  for (std::size_t k = 0; k < segs_.size(); ++k) {
-    const GrooveRun& s = segs_[k];
-    double first = 0, last = 0;
-    if (tau <= s.sample_dead_tau) s.shape->end_rows(qs_.data() + s.first, first, last);
-    end_dots_[2 * k] = first, end_dots_[2 * k + 1] = last;
-  }
-  for (const Edge& e : edges_) {
-    double f = e.fa + e.fb * tau;
-    for (int n = 0; n < e.nseg; ++n) f += K_int_ * end_dots_[2 * e.seg[n] + (e.row[n] == 0 ? 0 : 1)];
-    sum_abs += std::fabs(f);
-    sum_signed += f;
+    write_segment(s, t, live, cursor_.at.x.q.data(), cursor_.at.x.p.data(), u, v, ends_only);
   }
 }
 

@@ -92,7 +92,7 @@ void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::in
     B_[lo + k] = sh.path.B[k];
   }
   bool friction = false;
-  for (int k = 0; k < n && !friction; ++k) friction = dir[lo + k] != 0;
+  for (int k = 0; dir != nullptr && k < n && !friction; ++k) friction = dir[lo + k] != 0;
   if (!friction) return;
   double* f = dev_.q.data();
   for (int k = 0; k < n; ++k) f[k] = dir[lo + k] * c.f_kinetic[lo + k];
@@ -139,7 +139,7 @@ void RunStore::set_bounds(const Run& run, const std::int8_t* dir) {
   if (run.owner != kSpan) return;
   for (int row = 0; row < n; ++row) {
     const int i = run.lo + row;
-    if (row != 0 && row != n - 1 && dir[i] == 0) continue;
+    if (row != 0 && row != n - 1 && (dir == nullptr || dir[i] == 0)) continue;
     double d[4];
     row_derivative_bounds(*run.shape, row, sE_.data() + run.lo, d);
     for (int j = 0; j < 4; ++j) bound_[j + 1][i] = d[j];

@@ -50,9 +50,9 @@ class RunStore {
   RunShapes& shapes() { return shapes_; }
 
   // Run r projected from the state at time t (u, v; its sliding blocks' kinetic friction from
-  // dir): its affine path, and the modal coordinates of u's and v's deviation from it
-  // (with_modes = false: on its path, the deviation taken as zero). Bounds are taken for its end
-  // rows and sliding blocks (bound()).
+  // dir, nullptr when nothing in it slides): its affine path, and the modal coordinates of u's
+  // and v's deviation from it (with_modes = false: on its path, the deviation taken as zero).
+  // Bounds are taken for the rows its owner reads (bound()).
   const Run& project(const Chain& c, BlockRange r, double t, const double* u, const double* v,
                      const std::int8_t* dir, Owner owner, bool with_modes = true);
   // The run starting at block lo, taken onto its affine path (its modes dropped) by owner.

@@ -23,7 +23,7 @@ class StretchOf final : public SampleStretch {
 }  // namespace
 
 QuietEvolve::QuietEvolve(EventCore& core)
-    : core_(core), quiet_(core.c, core.store), sample_(core.s), fa_(core.c.N), fb_(core.c.N) {
+    : core_(core), quiet_(core.c, core.store), sums_(quiet_), sample_(core.s), fa_(core.c.N), fb_(core.c.N) {
   if (core.opt.ends_only) quiet_.set_sample_scales(core.active.settle_eps_u(), core.active.settle_eps_v());
 }
 
@@ -99,7 +99,7 @@ void QuietEvolve::serve_sample() {
   quiet_.advance_sample(sample_.t, core_.opt.ends_only);
   sample_.presummed.valid = core_.opt.ends_only;
   if (core_.opt.ends_only) {
-    quiet_.friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
+    sums_.at(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
     sample_.presummed.n_sliding = 0;  // nothing slides in a quiet phase
   }
   if (!core_.opt.ends_only || core_.obs.needs_positions_at(sample_.t))
@@ -139,9 +139,9 @@ bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offe
   bool summed = false;
   StretchOf stretch(
       [&](long k, long m, double& sum_abs, double& sum_signed) {
-        return summed = quiet_.window_sums(k, dt, m, sum_abs, sum_signed);
+        return summed = sums_.window(k, dt, m, sum_abs, sum_signed);
       },
-      [&](long k, long m, SampleStretch::Envelope& e) { return quiet_.envelope(k, dt, m, e); },
+      [&](long k, long m, SampleStretch::Envelope& e) { return sums_.envelope(k, dt, m, e); },
       [&](long k) -> const State& {
         // Several observers of one trajectory (FanOut) each look in order from the stretch's
         // start: a look behind the cursor replays the recurrence from there.
@@ -151,7 +151,7 @@ bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offe
         sample_.t = core_.clock.time_of(k);
         stamp_sample();
         sample_.presummed.valid = true;
-        quiet_.friction_sums(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
+        sums_.at(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
         sample_.presummed.n_sliding = 0;
         if (core_.obs.needs_positions_at(sample_.t))
           quiet_.write_sample(sample_.t, sample_.u.data(), sample_.v.data(), true);

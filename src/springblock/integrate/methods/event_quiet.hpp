@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/linear/quiet_sums.hpp"
 #include "springblock/integrate/methods/event_core.hpp"
 
 namespace sb::event_detail {
@@ -33,6 +34,7 @@ class QuietEvolve {
 
   EventCore& core_;
   QuietPhase quiet_;
+  QuietSums sums_;  // its samples' friction sums, for an observer of contact forces only
   State sample_;                 // the state at a sample served from the closed form
   std::vector<double> fa_, fb_;  // affine contact forces a + b t once the phase's modes died
   bool affine_ready_ = false;

@@ -1,4 +1,4 @@
-// The quiet phase's samples summed in closed form (QuietPhase::window_sums): what an observer of
+// The quiet phase's samples summed in closed form (QuietSums::window): what an observer of
 // time averages alone needs from a stretch of samples, without visiting each one.
 //
 // Over samples tau_j = tau_0 + j dt a contact block's force is f = fa + fb tau + K_int (end rows
@@ -21,46 +21,80 @@
 #include <cmath>
 
 #include "springblock/integrate/linear/envelope.hpp"
-#include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/integrate/linear/quiet_sums.hpp"
 
 namespace sb::event_detail {
 
+QuietSums::QuietSums(const QuietPhase& phase)
+    : phase_(phase),
+      end_dots_(2 * phase.segments().size()),
+      w0_(static_cast<int>(phase.cursor().q.size())),
+      w1_(static_cast<int>(phase.cursor().q.size())),
+      end_bound_(2 * phase.segments().size()),
+      slot_(phase.segments().size()) {}
+
+// Every interior force has the slider's slope K_s v (QuietPhase::next_threshold's affine
+// crossings).
+void QuietSums::prepare() {
+  if (interior_of_ == phase_.phases()) return;
+  const std::vector<double>& a = phase_.interior_forces();
+  interior_.reset(a.data(), static_cast<int>(a.size()), phase_.slider_slope());
+  interior_of_ = phase_.phases();
+}
+
+void QuietSums::at(double t, double& sum_abs, double& sum_signed) {
+  const double tau = t - phase_.t0();
+  prepare();
+  interior_.at(tau, sum_abs, sum_signed);
+  // The end rows' modal displacement of each live segment (dead ones: none, as in write_sample).
+  for (std::size_t k = 0; k < phase_.segments().size(); ++k) {
+    const QuietPhase::GrooveRun& s = phase_.segments()[k];
+    double first = 0, last = 0;
+    if (tau <= s.sample_dead_tau) s.shape->end_rows(phase_.cursor().q.data() + s.first, first, last);
+    end_dots_[2 * k] = first, end_dots_[2 * k + 1] = last;
+  }
+  for (const QuietPhase::Edge& e : phase_.edges()) {
+    double f = e.fa + e.fb * tau;
+    for (int n = 0; n < e.nseg; ++n) f += phase_.K_int() * end_dots_[2 * e.seg[n] + (e.row[n] == 0 ? 0 : 1)];
+    sum_abs += std::fabs(f);
+    sum_signed += f;
+  }
+}
+
+
 // Whether every contact block's force keeps its sign over tau0 .. tau_last (the tests above),
-// with the live segments' modes at tau0 in wq_, wp_ and bounds on their end rows' modal part from
-// then on in end_bound_. need_sums (window_sums): the forces beside no groove are not tested
-// (window_sums splits the stretch at their crossings), an edge whose sign the bounds cannot fix
+// with the live segments' modes at tau0 in w0_.q, w0_.p and bounds on their end rows' modal part from
+// then on in end_bound_. need_sums (window): the forces beside no groove are not tested
+// (window splits the stretch at their crossings), an edge whose sign the bounds cannot fix
 // is flagged in unsure_ instead of failing the test, and false when a mode has no closed-form
 // sample sum. The
 // bounds come from the modes at tau0 itself, never from an earlier sample's, so whether a stretch
 // is taken depends on the phase and the stretch only, not on which samples were served before
 // it (an observer keeping the series gets the sums of one that does not).
-bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
-  if (!interior_ready_) {
-    interior_.reset(affine_a_.data(), static_cast<int>(affine_a_.size()), slider_slope_);
-    interior_ready_ = true;
-  }
+bool QuietSums::keeps_signs(double tau0, double tau_last, bool need_sums) {
+  prepare();
   // Interior forces: for bounds, none crosses zero inside the stretch; the sums split the
-  // stretch at their crossings instead (window_sums).
+  // stretch at their crossings instead (window).
   if (!need_sums && interior_.crossed(tau_last) != interior_.crossed(tau0)) return false;
   // The live segments' modes at tau0, and bounds on their end rows' modal part from then on.
-  for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
-    const GrooveRun& s = segs_[sgi];
+  for (std::size_t sgi = 0; sgi < phase_.segments().size(); ++sgi) {
+    const QuietPhase::GrooveRun& s = phase_.segments()[sgi];
     end_bound_[2 * sgi] = end_bound_[2 * sgi + 1] = 0.0;
     if (!(tau0 <= s.sample_dead_tau)) continue;
     const RunShape& d = *s.shape;
     for (int k = 0; need_sums && k < s.n; ++k)
       if (std::isnan(d.steps.sample_sum[k][0])) return false;  // no closed-form sum for this mode
-    double* q = wq_.data() + s.first;
-    double* p = wp_.data() + s.first;
-    d.evolve(store_.q0() + s.first, store_.p0() + s.first, tau0, q, p);
+    double* q = w0_.q.data() + s.first;
+    double* p = w0_.p.data() + s.first;
+    d.evolve(phase_.store().q0() + s.first, phase_.store().p0() + s.first, tau0, q, p);
     end_bound_[2 * sgi] = row_deviation_bound(d, 0, q, p);
     end_bound_[2 * sgi + 1] = row_deviation_bound(d, s.n - 1, q, p);
   }
   // Edge forces: the affine part keeps clear of the modes' reach, on the side it starts on, at
   // both ends of the stretch (so everywhere between).
-  if (need_sums) unsure_.assign(edges_.size(), 0);
-  for (std::size_t k = 0; k < edges_.size(); ++k) {
-    const Edge& e = edges_[k];
+  if (need_sums) unsure_.assign(phase_.edges().size(), 0);
+  for (std::size_t k = 0; k < phase_.edges().size(); ++k) {
+    const QuietPhase::Edge& e = phase_.edges()[k];
     const double reach = edge_reach(e);
     const double f0 = e.fa + e.fb * tau0, sg = f0 >= 0 ? 1.0 : -1.0;
     if (sg * f0 > reach && sg * (e.fa + e.fb * tau_last) > reach) continue;
@@ -70,33 +104,33 @@ bool QuietPhase::keeps_signs(double tau0, double tau_last, bool need_sums) {
   return true;
 }
 
-double QuietPhase::edge_reach(const Edge& e) const {
+double QuietSums::edge_reach(const QuietPhase::Edge& e) const {
   double reach = 0;
-  for (int r = 0; r < e.nseg; ++r) reach += K_int_ * end_bound_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
+  for (int r = 0; r < e.nseg; ++r) reach += phase_.K_int() * end_bound_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
   return reach;
 }
 
-bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
+bool QuietSums::window(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
   sum_abs = sum_signed = 0;
   if (n <= 0) return false;
-  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
+  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - phase_.t0(); };
   const double tau0 = tau_of(k0);
   if (!keeps_signs(tau0, tau_of(k0 + n - 1), true)) return false;
   // Each live segment's end rows summed over its live samples (those with tau <= sample_dead_tau,
   // as friction_sums counts them).
-  for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
-    const GrooveRun& s = segs_[sgi];
+  for (std::size_t sgi = 0; sgi < phase_.segments().size(); ++sgi) {
+    const QuietPhase::GrooveRun& s = phase_.segments()[sgi];
     end_dots_[2 * sgi] = end_dots_[2 * sgi + 1] = 0.0;
     if (!(tau0 <= s.sample_dead_tau)) continue;
     long live = n;
     while (live > 0 && !(tau_of(k0 + live - 1) <= s.sample_dead_tau)) --live;  // rare: dies in the stretch
     const RunShape& d = *s.shape;
     const double tau1 = tau_of(k0 + live);
-    double* q1 = wq1_.data() + s.first;
-    double* p1 = wp1_.data() + s.first;
-    d.evolve(store_.q0() + s.first, store_.p0() + s.first, tau1, q1, p1);
-    const double* q = wq_.data() + s.first;
-    const double* p = wp_.data() + s.first;
+    double* q1 = w1_.q.data() + s.first;
+    double* p1 = w1_.p.data() + s.first;
+    d.evolve(phase_.store().q0() + s.first, phase_.store().p0() + s.first, tau1, q1, p1);
+    const double* q = w0_.q.data() + s.first;
+    const double* p = w0_.p.data() + s.first;
     const double* first_row = d.row(0);
     const double* last_row = d.row(s.n - 1);
     double first = 0, last = 0;
@@ -110,7 +144,7 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   // integers.
   auto sum_of_taus = [&](long k, long m) {
     const double mm = static_cast<double>(m);
-    return dt * (0.5 * static_cast<double>(2 * k + m - 1) * mm) - mm * t0_;
+    return dt * (0.5 * static_cast<double>(2 * k + m - 1) * mm) - mm * phase_.t0();
   };
   const double mm = static_cast<double>(n);
   const double st = sum_of_taus(k0, n);
@@ -133,11 +167,11 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
     j += m;
   }
   sum_abs = interior_abs, sum_signed = interior_signed;
-  for (std::size_t k = 0; k < edges_.size(); ++k) {
+  for (std::size_t k = 0; k < phase_.edges().size(); ++k) {
     if (unsure_[k]) continue;
-    const Edge& e = edges_[k];
+    const QuietPhase::Edge& e = phase_.edges()[k];
     double f = e.fa * mm + e.fb * st;
-    for (int r = 0; r < e.nseg; ++r) f += K_int_ * end_dots_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
+    for (int r = 0; r < e.nseg; ++r) f += phase_.K_int() * end_dots_[2 * e.seg[r] + (e.row[r] == 0 ? 0 : 1)];
     sum_abs += e.fa + e.fb * tau0 >= 0 ? f : -f;  // every sample's sign (checked above)
     sum_signed += f;
   }
@@ -145,30 +179,30 @@ bool QuietPhase::window_sums(long k0, double dt, long n, double& sum_abs, double
   return true;
 }
 
-void QuietPhase::unsure_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
-  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
+void QuietSums::unsure_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
+  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - phase_.t0(); };
   // The segments beside the flagged edges, each given a slot of 2 n values: its first and last
   // rows' modal parts at each sample.
   std::fill(slot_.begin(), slot_.end(), -1);
   int slots = 0;
-  for (std::size_t k = 0; k < edges_.size(); ++k)
+  for (std::size_t k = 0; k < phase_.edges().size(); ++k)
     if (unsure_[k])
-      for (int r = 0; r < edges_[k].nseg; ++r)
-        if (slot_[edges_[k].seg[r]] < 0) slot_[edges_[k].seg[r]] = slots++;
+      for (int r = 0; r < phase_.edges()[k].nseg; ++r)
+        if (slot_[phase_.edges()[k].seg[r]] < 0) slot_[phase_.edges()[k].seg[r]] = slots++;
   if (slots == 0) return;
   // Zero once the segment's modes are cut, as friction_sums cuts them; from the modes at the
-  // first sample (keeps_signs' wq_, wp_) before.
+  // first sample (keeps_signs' w0_.q, w0_.p) before.
   const std::size_t nn = static_cast<std::size_t>(n);
   row_values_.assign(2 * nn * static_cast<std::size_t>(slots), 0.0);
   const double tau0 = tau_of(k0);
-  for (std::size_t sgi = 0; sgi < segs_.size(); ++sgi) {
-    const GrooveRun& s = segs_[sgi];
+  for (std::size_t sgi = 0; sgi < phase_.segments().size(); ++sgi) {
+    const QuietPhase::GrooveRun& s = phase_.segments()[sgi];
     if (slot_[sgi] < 0 || !(tau0 <= s.sample_dead_tau)) continue;
     const RunShape& d = *s.shape;
-    double* q = wq1_.data() + s.first;  // window_sums is done with them: a working copy
-    double* p = wp1_.data() + s.first;
-    std::copy(wq_.begin() + s.first, wq_.begin() + s.first + s.n, q);
-    std::copy(wp_.begin() + s.first, wp_.begin() + s.first + s.n, p);
+    double* q = w1_.q.data() + s.first;  // window_sums is done with them: a working copy
+    double* p = w1_.p.data() + s.first;
+    std::copy(w0_.q.begin() + s.first, w0_.q.begin() + s.first + s.n, q);
+    std::copy(w0_.p.begin() + s.first, w0_.p.begin() + s.first + s.n, p);
     double* first = row_values_.data() + 2 * nn * static_cast<std::size_t>(slot_[sgi]);
     double* last = first + n;
     for (long j = 0; j < n && tau_of(k0 + j) <= s.sample_dead_tau; ++j) {
@@ -176,13 +210,13 @@ void QuietPhase::unsure_sums(long k0, double dt, long n, double& sum_abs, double
       d.step_sample(q, p);
     }
   }
-  for (std::size_t k = 0; k < edges_.size(); ++k) {
+  for (std::size_t k = 0; k < phase_.edges().size(); ++k) {
     if (!unsure_[k]) continue;
-    const Edge& e = edges_[k];
+    const QuietPhase::Edge& e = phase_.edges()[k];
     for (long j = 0; j < n; ++j) {
       double f = e.fa + e.fb * tau_of(k0 + j);
       for (int r = 0; r < e.nseg; ++r)
-        f += K_int_ * row_values_[2 * nn * static_cast<std::size_t>(slot_[e.seg[r]]) + (e.row[r] == 0 ? 0 : nn) +
+        f += phase_.K_int() * row_values_[2 * nn * static_cast<std::size_t>(slot_[e.seg[r]]) + (e.row[r] == 0 ? 0 : nn) +
                                   static_cast<std::size_t>(j)];
       sum_abs += std::fabs(f);
       sum_signed += f;
@@ -194,15 +228,15 @@ void QuietPhase::unsure_sums(long k0, double dt, long n, double& sum_abs, double
 // every sign fixed, sum |f| = sum sign(f) f. The sums friction_sums forms round differently from
 // the exact values, and the straight line between the ends rounds too; a margin of 1e-9 of the
 // sums' size, millions of times their round-off, keeps the bound a bound.
-bool QuietPhase::envelope(long k0, double dt, long n, SampleStretch::Envelope& env) {
+bool QuietSums::envelope(long k0, double dt, long n, SampleStretch::Envelope& env) {
   if (n <= 0) return false;
-  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0_; };
+  auto tau_of = [&](long k) { return static_cast<double>(k) * dt - phase_.t0(); };
   const double tau0 = tau_of(k0), tau1 = tau_of(k0 + n - 1);
   if (!keeps_signs(tau0, tau1, false)) return false;
   interior_.at(tau0, env.abs_first, env.signed_first);
   interior_.at(tau1, env.abs_last, env.signed_last);
   double reach = 0;
-  for (const Edge& e : edges_) {
+  for (const QuietPhase::Edge& e : phase_.edges()) {
     const double f0 = e.fa + e.fb * tau0, f1 = e.fa + e.fb * tau1, sg = f0 >= 0 ? 1.0 : -1.0;
     env.abs_first += sg * f0, env.abs_last += sg * f1;
     env.signed_first += f0, env.signed_last += f1;
