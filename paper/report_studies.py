@@ -11,6 +11,8 @@ from tools.reproduction.inputs import published_rows
 REPO = Path(__file__).resolve().parent.parent
 
 STUDIES = ("layout", "extraction", "method_bias", "rk4_refinement", "slip_events")
+# The studies that go beyond the paper (their own section of the report), in STUDIES' order.
+BEYOND = ("slip_events",)
 
 
 def load_study(data, name):
@@ -156,27 +158,39 @@ def slip_events_blocks(doc, path, figs):
 
 
 def study_blocks(data, figs):
+    """The optional studies of the paper's open choices, then those that go beyond the paper."""
     B = [("h", 2, "Optional studies"),
          ("p", "Expensive studies that change only when the model does: `make studies` runs them and commits "
                "their documents under `paper/data/`; each names the commit that made it.")]
     titles = {"layout": "Pattern layout", "extraction": "Reading mu_s off the loading curve",
               "method_bias": "The paper's integrator on the deviating rows",
               "rk4_refinement": "RK4 below the paper's step",
-              "slip_events": "Beyond the paper: slip events and their sizes"}
+              "slip_events": "Slip events and their sizes"}
     for name in STUDIES:
-        B.append(("h", 3, titles[name]))
-        doc, path = load_study(data, name)
-        if doc is None:
-            B.append(("p", f"{name}: not run (`make studies`) and not committed."))
-        elif name == "layout":
-            B += layout_blocks(doc, path, figs)
-        elif name == "extraction":
-            B += extraction_blocks(doc, path)
-        elif name == "method_bias":
-            B += method_bias_blocks(doc, path)
-        elif name == "slip_events":
-            B += slip_events_blocks(doc, path, figs)
-        else:
-            B.append(("p", "Drawn with accuracy_cost's settings in the accuracy figure above. " +
-                      provenance_text(doc, path)))
+        if name in BEYOND:
+            continue
+        B += one_study(data, figs, name, titles[name])
+    B += [("h", 2, "Beyond the paper"),
+          ("p", "Questions the paper does not ask, answered with the same simulator and statistics (studies "
+                "like the ones above: `make studies`, documents under `paper/data/`).")]
+    for name in BEYOND:
+        B += one_study(data, figs, name, titles[name])
+    return B
+
+
+def one_study(data, figs, name, title):
+    B = [("h", 3, title)]
+    doc, path = load_study(data, name)
+    if doc is None:
+        B.append(("p", f"{name}: not run (`make studies`) and not committed."))
+    elif name == "layout":
+        B += layout_blocks(doc, path, figs)
+    elif name == "extraction":
+        B += extraction_blocks(doc, path)
+    elif name == "method_bias":
+        B += method_bias_blocks(doc, path)
+    elif name == "slip_events":
+        B += slip_events_blocks(doc, path, figs)
+    else:
+        B.append(("p", "Drawn with accuracy_cost's settings in the accuracy figure above. " + provenance_text(doc, path)))
     return B
