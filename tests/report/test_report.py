@@ -24,6 +24,8 @@ sys.dont_write_bytecode = True
 from tools import summary_schema as schema  # noqa: E402
 
 FAILURES = []
+# The source tree (committed study documents live in its paper/data/).
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
 def check(ok, message):
