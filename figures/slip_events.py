@@ -7,7 +7,7 @@ block sliding (the chain's stick-slip cycles) are the separate points at the rig
 Data: the optional study `slip_events` (`make studies`; committed as paper/data/slip_events.json)."""
 import math
 
-import style
+from figures import style
 
 a = style.arguments(__doc__)
 doc = style.load_study(a.data, "slip_events")
