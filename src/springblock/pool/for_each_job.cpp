@@ -1,6 +1,5 @@
 #include "springblock/pool/for_each_job.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <exception>
 
@@ -14,8 +13,8 @@ std::vector<char> for_each_job(int n_jobs, int threads, const std::function<bool
   std::vector<std::exception_ptr> errors(n_jobs);
   std::atomic<bool> failed{false};
   const auto stopped = [&] { return (interrupt && interrupt->load()) || failed.load(); };
-  // A job dealt just before the stop is skipped by its thread, as if never dealt; a job that
-  // throws stops the others at once, not when the calling thread collects it.
+  // After a stop the threads skip the jobs still queued; a job that throws stops the others at
+  // once, not when this thread collects it.
   ThreadPool<bool> pool(threads, [&](int j) {
     if (stopped()) return false;
     try {
@@ -25,19 +24,17 @@ std::vector<char> for_each_job(int n_jobs, int threads, const std::function<bool
       throw;
     }
   });
-  using clock = std::chrono::steady_clock;
-  auto next_report = clock::now() + std::chrono::seconds(1);
-  int next = 0;
-  while ((next < n_jobs && !stopped()) || pool.busy() > 0) {
-    while (next < n_jobs && !stopped() && pool.has_room()) pool.submit(next++);
-    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_report - clock::now());
-    if (auto d = pool.collect(std::max(wait, std::chrono::milliseconds(0)))) {
-      finished[d->id] = d->result;
-      if (d->error) errors[d->id] = d->error;
+  // All queued at once, in order: a thread that finishes takes the next one without waiting for
+  // this thread, which wakes only to report progress and at the end.
+  std::vector<int> ids(n_jobs);
+  for (int j = 0; j < n_jobs; ++j) ids[j] = j;
+  pool.submit(ids);
+  while (pool.busy() > 0) {
+    for (auto& d : pool.collect_all(std::chrono::seconds(1))) {
+      finished[d.id] = d.result;
+      errors[d.id] = d.error;
     }
-    if (clock::now() < next_report) continue;
-    if (every_second) every_second();
-    next_report = clock::now() + std::chrono::seconds(1);
+    if (pool.busy() > 0 && every_second) every_second();
   }
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);

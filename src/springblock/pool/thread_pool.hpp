@@ -1,9 +1,11 @@
 #pragma once
 // The one thread pool: the repetitions of an ensemble (for_each_job.hpp) and the units of a
-// sweep (parallel/) both run on it. Jobs are numbered; the calling thread submits them one at a
-// time and collects each result, in finish order, with any exception the job threw. Submitting a
-// job only when a thread is free (has_room) is what deals them dynamically and in the caller's
-// order: a thread that finishes takes the next job.
+// sweep (parallel/) both run on it. Jobs are numbered and queued in the caller's order; a thread
+// that finishes a job takes the next in the queue, so they are dealt dynamically and in order.
+// The caller collects each result, in finish order, with any exception the job threw. A sweep
+// submits a unit only when a thread is free (has_room), as units come in; an ensemble queues all
+// its repetitions at once and collects them in batches (collect_all), so that many short jobs
+// cost the threads no hand-over with the caller.
 //
 // Plain std::thread workers rather than an OpenMP loop: the sweep schedulers need jobs handed in
 // one at a time as they arrive (from another MPI rank, say), which a parallel-for cannot do, and
@@ -14,6 +16,7 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <iterator>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -54,26 +57,43 @@ class ThreadPool {
   ThreadPool& operator=(const ThreadPool&) = delete;
 
   int threads() const { return static_cast<int>(workers_.size()); }
-  int busy() const { return busy_; }  // submitted and not yet collected
+  int busy() const { return busy_; }
   bool has_room() const { return busy_ < threads(); }
 
-  void submit(int id) {
+  void submit(int id) { submit(std::vector<int>{id}); }
+  // Queues `ids` in this order, behind the jobs already queued.
+  void submit(const std::vector<int>& ids) {
     {
       std::lock_guard lock(mu_);
-      todo_.push_back(id);
-      ++busy_;
+      todo_.insert(todo_.end(), ids.begin(), ids.end());
+      running_ += static_cast<int>(ids.size());
     }
-    todo_cv_.notify_one();
+    busy_ += static_cast<int>(ids.size());
+    if (ids.size() == 1) todo_cv_.notify_one();
+    else todo_cv_.notify_all();
   }
 
   // The next finished job, waiting at most `wait`; nothing on timeout.
   std::optional<Done> collect(std::chrono::milliseconds wait) {
     std::unique_lock lock(mu_);
+    wake_on_each_ = true;
     if (!done_cv_.wait_for(lock, wait, [&] { return !done_.empty(); })) return std::nullopt;
     Done d = std::move(done_.front());
     done_.pop_front();
     --busy_;
     return d;
+  }
+
+  // The finished jobs, in finish order, once every submitted job has finished or `wait` has
+  // passed. The caller is woken once, not at each job.
+  std::vector<Done> collect_all(std::chrono::milliseconds wait) {
+    std::unique_lock lock(mu_);
+    wake_on_each_ = false;
+    done_cv_.wait_for(lock, wait, [&] { return running_ == 0; });
+    std::vector<Done> out(std::make_move_iterator(done_.begin()), std::make_move_iterator(done_.end()));
+    done_.clear();
+    busy_ -= static_cast<int>(out.size());
+    return out;
   }
 
  private:
@@ -92,11 +112,14 @@ class ThreadPool {
       } catch (...) {
         d.error = std::current_exception();
       }
+      bool wake = false;
       {
         std::lock_guard lock(mu_);
         done_.push_back(std::move(d));
+        --running_;
+        wake = wake_on_each_ || running_ == 0;
       }
-      done_cv_.notify_one();
+      if (wake) done_cv_.notify_one();
     }
   }
 
@@ -106,7 +129,9 @@ class ThreadPool {
   std::deque<int> todo_;
   std::deque<Done> done_;
   bool stop_ = false;
-  int busy_ = 0;
+  bool wake_on_each_ = true;  // the caller waits in collect, not collect_all
+  int running_ = 0;           // submitted and not yet finished (under mu_)
+  int busy_ = 0;              // submitted and not yet collected (the caller's own count)
   std::vector<std::thread> workers_;
 };
 
