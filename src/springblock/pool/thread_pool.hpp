@@ -42,17 +42,15 @@ class ThreadPool {
   ThreadPool(int threads, Job job) : job_(std::move(job)) {
     if (threads < 1) throw std::invalid_argument("a thread pool needs at least one thread");
     workers_.reserve(threads);
-    for (int t = 0; t < threads; ++t) workers_.emplace_back([this] { work(); });
+    try {
+      for (int t = 0; t < threads; ++t) workers_.emplace_back([this] { work(); });
+    } catch (...) {  // the system refused a thread: end those started, then say why
+      stop_and_join();
+      throw;
+    }
   }
   // Jobs still queued are dropped (the run ended, or a job threw); running ones finish first.
-  ~ThreadPool() {
-    {
-      std::lock_guard lock(mu_);
-      stop_ = true;
-    }
-    todo_cv_.notify_all();
-    for (auto& w : workers_) w.join();
-  }
+  ~ThreadPool() { stop_and_join(); }
   ThreadPool(const ThreadPool&) = delete;
   ThreadPool& operator=(const ThreadPool&) = delete;
 
@@ -60,18 +58,9 @@ class ThreadPool {
   int busy() const { return busy_; }
   bool has_room() const { return busy_ < threads(); }
 
-  void submit(int id) { submit(std::vector<int>{id}); }
+  void submit(int id) { enqueue(&id, &id + 1); }
   // Queues `ids` in this order, behind the jobs already queued.
-  void submit(const std::vector<int>& ids) {
-    {
-      std::lock_guard lock(mu_);
-      todo_.insert(todo_.end(), ids.begin(), ids.end());
-      running_ += static_cast<int>(ids.size());
-    }
-    busy_ += static_cast<int>(ids.size());
-    if (ids.size() == 1) todo_cv_.notify_one();
-    else todo_cv_.notify_all();
-  }
+  void submit(const std::vector<int>& ids) { enqueue(ids.data(), ids.data() + ids.size()); }
 
   // The next finished job, waiting at most `wait`; nothing on timeout.
   std::optional<Done> collect(std::chrono::milliseconds wait) {
@@ -97,6 +86,27 @@ class ThreadPool {
   }
 
  private:
+  void stop_and_join() {
+    {
+      std::lock_guard lock(mu_);
+      stop_ = true;
+    }
+    todo_cv_.notify_all();
+    for (auto& w : workers_) w.join();
+  }
+
+  void enqueue(const int* first, const int* last) {
+    const int n = static_cast<int>(last - first);
+    {
+      std::lock_guard lock(mu_);
+      todo_.insert(todo_.end(), first, last);
+      running_ += n;
+    }
+    busy_ += n;
+    if (n == 1) todo_cv_.notify_one();
+    else todo_cv_.notify_all();
+  }
+
   void work() {
     for (;;) {
       Done d;
