@@ -5,6 +5,8 @@
 
 #include <atomic>
 #include <chrono>
+#include <functional>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -115,6 +117,39 @@ TEST(ThreadPool, ProgressComesFromTheCallingThreadWhileJobsRun) {
       [&] { ++calls, on_caller = on_caller && std::this_thread::get_id() == caller; });
   EXPECT_GE(calls, 1);  // about once a second over 1.3 s
   EXPECT_TRUE(on_caller);
+}
+
+// Threads are kept between calls (one idle team per thread count): a call still runs on as many
+// threads as it asks for, and callers at the same time do not share a team.
+TEST(ThreadPool, EachCallRunsOnTheThreadsItAsksFor) {
+  for (int threads : {2, 1, 3, 1, 2}) {
+    std::mutex mu;
+    std::set<std::thread::id> seen;
+    for_each_job(60, threads, [&](int) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      std::lock_guard lock(mu);
+      seen.insert(std::this_thread::get_id());
+      return true;
+    }, nullptr);
+    EXPECT_LE(seen.size(), static_cast<std::size_t>(threads)) << threads << " threads asked for";
+    // 60 jobs of 2 ms: every thread asked for but the most starved one takes some.
+    EXPECT_GE(seen.size(), static_cast<std::size_t>(threads > 1 ? 2 : 1)) << threads << " threads asked for";
+    EXPECT_EQ(seen.count(std::this_thread::get_id()), 0u);  // the caller deals, it runs no job
+  }
+}
+
+TEST(ThreadPool, CallersAtTheSameTimeEachRunTheirOwnJobs) {
+  std::vector<std::atomic<int>> a(kJobs), b(kJobs);
+  const auto count = [](std::vector<std::atomic<int>>& runs) {
+    for_each_job(kJobs, 2, [&](int j) { return ++runs[j] == 1; }, nullptr);
+  };
+  std::thread other(count, std::ref(b));
+  count(a);
+  other.join();
+  for (int j = 0; j < kJobs; ++j) {
+    EXPECT_EQ(a[j].load(), 1) << "job " << j;
+    EXPECT_EQ(b[j].load(), 1) << "job " << j;
+  }
 }
 
 TEST(ThreadPool, AnEnsembleInterruptedBeforeItStartsHasNoResult) {
