@@ -1,6 +1,7 @@
 #pragma once
 // A fixed list of jobs on the thread pool, as an ensemble's repetitions need it: jobs 0 .. n-1
-// dealt in index order, one at a time, to whichever thread is free.
+// dealt in index order, one at a time, to whichever thread is free. The threads are kept, idle,
+// for the next call asking for as many.
 #include <atomic>
 #include <functional>
 #include <vector>
