@@ -302,7 +302,7 @@ void add_target_options(TargetCommandLine& cl) {
   app.add_option("--out", opt.out, "directory for " + opt.target + ".json");
   cl.fields.add(&app, "method", "integrator: event (default; exact switching, adaptive) or rk4 (the paper's fixed step)")
       ->type_name("TEXT");
-  cl.fields.add(&app, "threads", "OpenMP threads over repetitions, 0 to 1024 (0 = all cores, the default)")->type_name("INT");
+  cl.fields.add(&app, "threads", "threads over repetitions, 0 to 1024 (0 = all cores, the default)")->type_name("INT");
   cl.fields.add(&app, "seed", "seed of every scene's repetition streams, >= 0 (default 1)")->type_name("UINT");
   app.add_option("--table", opt.table, "published table TSV this target reproduces");
   app.add_option("--input", opt.inputs, "JSON of another target this one reads")->check(CLI::ExistingFile);

@@ -18,7 +18,7 @@ SweepCommand::SweepCommand(CLI::App& app) : args_(std::make_unique<Args>()) {
       ->required();
   cmd_->add_option("--out", args_->out, "results (JSON lines; default: FILE with .results.jsonl); the checkpoint "
                                         "is this path + .checkpoint");
-  cmd_->add_option("--threads", args_->threads, "threads per process (rank); 0 = OpenMP's default")
+  cmd_->add_option("--threads", args_->threads, "threads per process (rank); 0 = all cores (OMP_NUM_THREADS if set)")
       ->check(CLI::Range(0, 4096));
   cmd_->add_flag("--resume", args_->resume, "finish an interrupted sweep from its checkpoint, computing only the "
                                             "units it lacks");

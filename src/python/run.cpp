@@ -1,5 +1,5 @@
 // springblock.run and run_many: the ensemble runs with the GIL released (other Python threads go
-// on; the repetitions use the scene's OpenMP threads) and stops cleanly on Ctrl-C.
+// on; the repetitions use the scene's threads) and stops cleanly on Ctrl-C.
 #include <chrono>
 #include <future>
 #include <pybind11/stl.h>

@@ -79,12 +79,14 @@ const std::vector<Observable>& observables();
 RunResult run_repetition(const Scene& scene, int rep, const std::atomic<bool>* interrupt = nullptr,
                          std::atomic<std::int64_t>* progress_ns = nullptr);
 
-// `progress` (optional) is called from a reporter thread about once a second with the
-// fraction of simulated time done and the elapsed wall seconds.
+// `progress` (optional) is called about once a second with the fraction of simulated time done
+// and the elapsed wall seconds, from the calling thread, which runs no repetition: it deals them
+// to the thread pool (pool/) and waits. The callback should be quick: the next repetition is
+// dealt after it returns.
 EnsembleResult run_ensemble(const Scene& scene, const std::atomic<bool>* interrupt = nullptr,
                             std::function<void(double fraction, double elapsed_s)> progress = {});
 
-// Several scenes in one pool of threads: every (scene, repetition) is one job, so no thread
+// Several scenes on one thread pool: every (scene, repetition) is one job, so no thread
 // idles at the end of a scene while another finishes its last repetition. Each scene's result
 // is what run_ensemble would give it (same seeds, same order); its wall_s is its share, the sum
 // of its repetitions' wall times over the threads. `progress` gets the overall fraction,

@@ -131,7 +131,7 @@ std::vector<Entry> ensemble_entries() {
        if (n < 0) throw InputError(k, "seed = " + v + " must be >= 0");
        s.seed = static_cast<std::uint64_t>(n);
      }},
-    {{"threads", "OpenMP threads over repetitions (default 0 = all cores: OMP_NUM_THREADS if set, else every hardware thread)", "2"},
+    {{"threads", "threads over repetitions (default 0 = all cores: OMP_NUM_THREADS if set, else every hardware thread)", "2"},
      [](Scene& s, auto& k, auto& v) {
        auto n = integer(k, v);
        if (n < 0 || n > 1024) throw InputError(k, "threads = " + v + " is outside [0, 1024]");

@@ -40,7 +40,7 @@ Outcome Dealer::outcome() const {
   return o;
 }
 
-void serve_pool(LocalPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait) {
+void serve_pool(UnitPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait) {
   while (pool.has_room()) {
     auto id = dealer.next(rank);
     if (!id) break;
@@ -49,7 +49,7 @@ void serve_pool(LocalPool& pool, Dealer& dealer, int rank, std::chrono::millisec
   if (pool.busy() == 0) return;
   if (auto d = pool.collect(wait)) {
     if (d->error) std::rethrow_exception(d->error);
-    dealer.finished(d->id, rank, std::move(d->record));
+    dealer.finished(d->id, rank, std::move(d->result));
   }
 }
 

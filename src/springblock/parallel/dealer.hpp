@@ -6,10 +6,15 @@
 #include <map>
 #include <optional>
 
-#include "springblock/parallel/local_pool.hpp"
 #include "springblock/parallel/scheduler.hpp"
+#include "springblock/pool/thread_pool.hpp"
 
 namespace sb::parallel {
+
+// A rank's threads: the thread pool of the core library (pool/), each job a unit returning its
+// record (null when interrupted). The calling thread hands out units and collects their records;
+// under MPI it is also the only thread that talks to other ranks.
+using UnitPool = ThreadPool<nlohmann::json>;
 
 class Dealer {
  public:
@@ -38,6 +43,6 @@ class Dealer {
 
 // One round of the coordinator's own threads: fills free threads from the dealer, then waits at
 // most `wait` for a finished unit and hands it to the dealer. Rethrows a unit's exception.
-void serve_pool(LocalPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait);
+void serve_pool(UnitPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait);
 
 }  // namespace sb::parallel

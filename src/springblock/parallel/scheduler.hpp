@@ -57,7 +57,7 @@ class Scheduler {
   virtual void abort(int code) { (void)code; }
 };
 
-// One process, `threads` threads (0 = OpenMP's default, as for a scene).
+// One process, `threads` threads (0 = all cores, as for a scene: resolve_threads).
 std::unique_ptr<Scheduler> make_thread_scheduler(int threads);
 
 }  // namespace sb::parallel

@@ -16,7 +16,7 @@ class ThreadScheduler : public Scheduler {
   Outcome run(const std::vector<int>& ids, const UnitRunner& run_unit, const Hooks& hooks,
               const std::atomic<bool>* interrupt) override {
     Dealer dealer(ids, hooks, interrupt);
-    LocalPool pool(threads_, run_unit, interrupt);
+    UnitPool pool(threads_, [&](int id) { return run_unit(id, interrupt); });
     while (!(dealer.queue_empty() || dealer.interrupted()) || pool.busy() > 0) {
       serve_pool(pool, dealer, 0, std::chrono::milliseconds(100));
       dealer.tick();

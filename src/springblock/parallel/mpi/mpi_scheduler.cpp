@@ -81,7 +81,7 @@ class MpiScheduler : public Scheduler {
 Outcome MpiScheduler::coordinate(const std::vector<int>& ids, const UnitRunner& run_unit, const Hooks& hooks,
                                  const std::atomic<bool>* interrupt, int worker_slots) {
   Dealer dealer(ids, hooks, interrupt);
-  LocalPool pool(threads_, run_unit, interrupt);
+  UnitPool pool(threads_, [&](int id) { return run_unit(id, interrupt); });
   int open_slots = worker_slots;  // worker threads not yet told "no more"
   for (;;) {
     if (dealer.interrupted() && pool.busy() == 0) break;  // the caller aborts the workers
@@ -146,7 +146,7 @@ std::optional<int> MpiScheduler::ask(const nlohmann::json& message) {
 // A worker: one request per thread to start, then each finished unit goes back with a request
 // for the next, until rank 0 has nothing left for any of its threads.
 void MpiScheduler::work(const UnitRunner& run_unit, const std::atomic<bool>* interrupt) {
-  LocalPool pool(threads_, run_unit, interrupt);
+  UnitPool pool(threads_, [&](int id) { return run_unit(id, interrupt); });
   for (int t = 0; t < threads_; ++t)
     if (auto id = ask(nlohmann::json::object())) pool.submit(*id);
   while (pool.busy() > 0) {
@@ -159,11 +159,11 @@ void MpiScheduler::work(const UnitRunner& run_unit, const std::atomic<bool>* int
       } catch (const std::exception& e) {
         msg["error"] = e.what();
       }
-    } else if (d->record.is_null()) {
+    } else if (d->result.is_null()) {
       msg["returned"] = d->id;  // cut short by an interrupt: not a result
     } else {
       msg["id"] = d->id;
-      msg["record"] = std::move(d->record);
+      msg["record"] = std::move(d->result);
     }
     if (interrupt && interrupt->load()) msg["stop"] = true;
     if (auto id = ask(msg)) pool.submit(*id);
