@@ -92,19 +92,14 @@ void NaiveRk4::run(const Chain& c, State& s, double t_end) const {
       us[i] = u[i] + h2 * ku[i];
       vs[i] = v[i] + h2 * kv[i];
     }
-    derivative(k, contact, f_kinetic, dir, us.data(), vs.data(), t + h2, vs_slider, ku.data(), kv.data());
-    for (std::size_t i = 0; i < N; ++i) {
-      su[i] += 2 * ku[i];
-      sv[i] += 2 * kv[i];
-      us[i] = u[i] + h2 * ku[i];
-      vs[i] = v[i] + h2 * kv[i];
-    }
-    derivative(k, contact, f_kinetic, dir, us.data(), vs.data(), t + h2, vs_slider, ku.data(), kv.data());
-    for (std::size_t i = 0; i < N; ++i) {
-      su[i] += 2 * ku[i];
-      sv[i] += 2 * kv[i];
-      us[i] = u[i] + h * ku[i];
-      vs[i] = v[i] + h * kv[i];
+    for (const double step : {h2, h}) {  // stages 2 and 3: slopes at t + h/2, weight 2
+      derivative(k, contact, f_kinetic, dir, us.data(), vs.data(), t + h2, vs_slider, ku.data(), kv.data());
+      for (std::size_t i = 0; i < N; ++i) {
+        su[i] += 2 * ku[i];
+        sv[i] += 2 * kv[i];
+        us[i] = u[i] + step * ku[i];
+        vs[i] = v[i] + step * kv[i];
+      }
     }
     derivative(k, contact, f_kinetic, dir, us.data(), vs.data(), t + h, vs_slider, ku.data(), kv.data());
     for (std::size_t i = 0; i < N; ++i) {
