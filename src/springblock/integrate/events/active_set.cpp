@@ -50,7 +50,7 @@ bool ActiveSet::settled_now(const State& s, BlockRange r) const {
   const double uL = sh.left ? s.u[r.lo - 1] : 0.0, uR = sh.right ? s.u[r.hi] : 0.0;
   for (int k = 0; k < r.size(); ++k) {
     const int i = r.lo + k;
-    const double A = sh.path.a0[k] + uL * sh.path.gL[k] + uR * sh.path.gR[k];
+    const double A = sh.path.A(k, uL, uR);
     if (std::fabs(s.u[i] - (A + sh.path.B[k] * s.t)) > rules_.eps_u) return false;
     if (std::fabs(s.v[i] - sh.path.B[k]) > rules_.eps_v) return false;
   }

@@ -55,7 +55,6 @@ class ModalRuns {
     return run_of_[lo] >= 0 && runs_[run_of_[lo]].lo == lo && runs_[run_of_[lo]].hi == hi;
   }
 
-  bool holds(int i) const { return run_of_[i] >= 0; }
   // First block of the run holding block i.
   int run_start(int i) const { return runs_[run_of_[i]].lo; }
   // Exact u of a block in a modal run at time t (direct evaluation).

@@ -23,16 +23,12 @@ void QuietPhase::write_segment(const GrooveRun& s, double t, bool live, const do
   }
 }
 
-// The sample cursor's arrays serve as scratch: the phase's samples are over once it is evaluated
-// (at its end, or where the observer stops the run).
 void QuietPhase::evaluate(double t, double* u, double* v) {
   const double tau = t - t0_;
-  Coords& x = cursor_.at.x;
-  cursor_.valid = false;
   for (const GrooveRun& s : segs_) {
-    const bool live = tau <= s.dead_tau;
-    if (live) store_.coords(store_.run(s.first), t, x.q.data(), x.p.data());
-    write_segment(s, t, live, x.q.data(), x.p.data(), u, v, false);
+    const RunStore::Run& rec = store_.run(s.first);
+    if (tau <= s.dead_tau) store_.write_at(rec, t, u, v);
+    else store_.write_path(rec, t, u, v);
   }
 }
 

@@ -50,6 +50,8 @@ struct Factors {
 // The affine path's pieces: B, and A = a0 + u_left gL + u_right gR - K^-1 f_kin.
 struct AffinePieces {
   std::vector<double> B, a0, gL, gR;
+  // Row k's A without friction, from the held ends' positions (0 at a free end).
+  double A(int k, double uL, double uR) const { return a0[k] + uL * gL[k] + uR * gR[k]; }
 };
 
 // Per mode: K's eigenvalue, omega^2, 1 / omega, and the bounds' constants: |q^(j)| <= c[j - 2]

@@ -43,21 +43,6 @@ SB_KERNEL_CLONES void columns_times(int n, const double* __restrict Q, const dou
 // its set-up, which costs more than the products on a run of a few blocks.
 constexpr int kRowWise = 8;
 
-}  // namespace
-
-RunStore::RunStore(const Chain& c)
-    : gamma_(c.gamma),
-      shapes_(c),
-      records_(c.N),
-      A_(c.N),
-      B_(c.N),
-      modes_(c.N),
-      sE_(c.N),
-      dev_(c.N),
-      sums_(c.N) {
-  for (auto& b : bound_) b.assign(c.N, std::numeric_limits<double>::infinity());
-}
-
 // What each owner moves its runs by: the exact stepper by its grid step, a modal run by
 // EdgeMarch's and by the sample spacing, a quiet phase's segment by the sample spacing.
 std::uint8_t parts_for(RunStore::Owner owner) {
@@ -67,6 +52,20 @@ std::uint8_t parts_for(RunStore::Owner owner) {
     case RunStore::kQuiet: return RunShape::kSample;
     default: return 0;
   }
+}
+
+}  // namespace
+
+RunStore::RunStore(const Chain& c)
+    : gamma_(c.gamma),
+      shapes_(c),
+      records_(c.N),
+      A_(c.N),
+      B_(c.N),
+      modes_(c.N),
+      dev_(c.N),
+      sums_(c.N) {
+  for (auto& b : bound_) b.assign(c.N, std::numeric_limits<double>::infinity());
 }
 
 RunStore::Run& RunStore::Records::claim(BlockRange r, const RunShape* shape, Owner owner) {
@@ -80,15 +79,13 @@ RunStore::Run& RunStore::Records::claim(BlockRange r, const RunShape* shape, Own
 
 void RunStore::drop(int lo) { records_.drop(lo); }
 
-void RunStore::clear() { records_.clear(); }
-
 // A = a0 + u_left gL + u_right gR - K^-1 f_kin and B from the shape's pieces (run_shape.hpp).
 void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir) {
   const RunShape& sh = *run.shape;
   const int lo = run.lo, n = run.n();
   const double uL = sh.left ? u[lo - 1] : 0.0, uR = sh.right ? u[run.hi] : 0.0;
   for (int k = 0; k < n; ++k) {
-    A_[lo + k] = sh.path.a0[k] + uL * sh.path.gL[k] + uR * sh.path.gR[k];
+    A_[lo + k] = sh.path.A(k, uL, uR);
     B_[lo + k] = sh.path.B[k];
   }
   bool friction = false;
@@ -110,7 +107,6 @@ const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, c
   if (!with_modes) {
     std::fill(modes_.q.begin() + lo, modes_.q.begin() + r.hi, 0.0);
     std::fill(modes_.p.begin() + lo, modes_.p.begin() + r.hi, 0.0);
-    std::fill(sE_.begin() + lo, sE_.begin() + r.hi, 0.0);
   } else {
     double* x = dev_.q.data();
     double* y = dev_.p.data();
@@ -119,10 +115,6 @@ const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, c
       y[k] = v[lo + k] - B_[lo + k];
     }
     rows_times(n, run.shape->Qr.data(), x, y, modes_.q.data() + lo, modes_.p.data() + lo);
-    for (int k = 0; k < n; ++k) {
-      const double qk = modes_.q[lo + k], pk = modes_.p[lo + k];
-      sE_[lo + k] = std::sqrt(pk * pk + run.shape->spectrum.w2[k] * qk * qk);
-    }
   }
   set_bounds(run, dir);
   return run;
@@ -131,28 +123,23 @@ const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, c
 // The bounds each owner reads: the exact stepper's screen those on the derivatives of its end
 // rows and sliding blocks, a modal run's neighbours the deviation of its end rows.
 void RunStore::set_bounds(const Run& run, const std::int8_t* dir) {
+  if (run.owner != kModal && run.owner != kSpan) return;
   const int n = run.n();
+  double* sE = dev_.p.data();
+  for (int k = 0; k < n; ++k) {
+    const double qk = modes_.q[run.lo + k], pk = modes_.p[run.lo + k];
+    sE[k] = std::sqrt(pk * pk + run.shape->spectrum.w2[k] * qk * qk);
+  }
   if (run.owner == kModal) {
-    for (int row : {0, n - 1}) bound_[0][run.lo + row] = row_deviation_bound(*run.shape, row, sE_.data() + run.lo);
+    for (int row : {0, n - 1}) bound_[0][run.lo + row] = row_deviation_bound(*run.shape, row, sE);
     return;
   }
-  if (run.owner != kSpan) return;
   for (int row = 0; row < n; ++row) {
     const int i = run.lo + row;
     if (row != 0 && row != n - 1 && (dir == nullptr || dir[i] == 0)) continue;
     double d[4];
-    row_derivative_bounds(*run.shape, row, sE_.data() + run.lo, d);
+    row_derivative_bounds(*run.shape, row, sE, d);
     for (int j = 0; j < 4; ++j) bound_[j + 1][i] = d[j];
-  }
-}
-
-void RunStore::to_path(int lo, Owner owner) {
-  Run& run = records_.at(lo);
-  run.owner = owner;
-  run.modes = false;
-  for (int i = run.lo; i < run.hi; ++i) {
-    modes_.q[i] = modes_.p[i] = sE_[i] = 0.0;
-    for (auto& b : bound_) b[i] = 0.0;
   }
 }
 
@@ -221,6 +208,11 @@ void RunStore::write(const Run& r, double t, const double* q, const double* p, d
 
 void RunStore::write_path(const Run& r, double t, double* u, double* v) const {
   for (int i = r.lo; i < r.hi; ++i) u[i] = path_u(i, t), v[i] = B_[i];
+}
+
+void RunStore::write_at(const Run& r, double t, double* u, double* v) {
+  coords(r, t, dev_.q.data(), dev_.p.data());
+  write(r, t, dev_.q.data(), dev_.p.data(), u, v);
 }
 
 void RunStore::taylor(int i, double t, const double* q, const double* p, int deg, double* c) const {

@@ -55,14 +55,10 @@ class RunStore {
   // Bounds are taken for the rows its owner reads (bound()).
   const Run& project(const Chain& c, BlockRange r, double t, const double* u, const double* v,
                      const std::int8_t* dir, Owner owner, bool with_modes = true);
-  // The run starting at block lo, taken onto its affine path (its modes dropped) by owner.
-  void to_path(int lo, Owner owner);
   // The run starting at block lo with its coordinates moved to origin t (the closed form).
   void rebase(int lo, double t);
   void drop(int lo);
-  void clear();
 
-  bool holds(int i) const { return records_.holds(i); }
   const Run& run(int i) const { return records_.run(i); }
   Owner owner(int i) const { return records_.holds(i) ? records_.run(i).owner : kNone; }
   // The record spanning exactly r, or nullptr.
@@ -87,6 +83,8 @@ class RunStore {
   void write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only = false,
              const double* du = nullptr, const double* dv = nullptr);
   void write_path(const Run& r, double t, double* u, double* v) const;
+  // u, v of run r's blocks at t by the closed form from its record.
+  void write_at(const Run& r, double t, double* u, double* v);
   // Bounds that hold at every time after the projection, from each mode's energy at it (which
   // never grows): order 0, |u - path| of block i; orders 2 to 5, |u^(order)|. Taken where a
   // run's owner reads them: order 0 at a modal run's end rows (its stuck neighbours' forces),
@@ -97,7 +95,6 @@ class RunStore {
   // run's coordinates q, p at t.
   void taylor(int i, double t, const double* q, const double* p, int deg, double* c) const;
 
-
  private:
   // Which runs exist: the records by first block, and each block's run.
   class Records {
@@ -106,7 +103,6 @@ class RunStore {
     // A new record for r (dropping any record that holds one of its blocks).
     Run& claim(BlockRange r, const RunShape* shape, Owner owner);
     void drop(int lo) { std::fill(first_.begin() + runs_[lo].lo, first_.begin() + runs_[lo].hi, -1); }
-    void clear() { std::fill(first_.begin(), first_.end(), -1); }
     bool holds(int i) const { return first_[i] >= 0; }
     const Run& run(int i) const { return runs_[first_[i]]; }
     Run& at(int lo) { return runs_[lo]; }
@@ -130,6 +126,7 @@ class RunStore {
     return d;
   }
   void set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir);
+  // The bounds the run's owner reads, from its modes' energies at t0.
   void set_bounds(const Run& run, const std::int8_t* dir);
 
   double gamma_;
@@ -137,9 +134,10 @@ class RunStore {
   Records records_;
   std::vector<double> A_, B_;      // per block: the affine path
   Coords modes_;                   // per slot: q0, p0
-  std::vector<double> sE_;         // per slot: sqrt of the modes' energies at t0
   std::vector<double> bound_[5];   // per block: bound() of orders 0, 2, 3, 4, 5
-  Coords dev_, sums_;              // work: a projection's deviation (u and v), a write's Q q and Q p
+  // Work arrays: a projection's deviation (u and v) and then its modes' sqrt energies
+  // (set_bounds), or the modes at a time (write_at); a write's Q q and Q p.
+  Coords dev_, sums_;
 };
 
 }  // namespace sb::event_detail

@@ -64,8 +64,8 @@ class EventCore {
   struct Stop {
     double t;
     ActiveSet::Next event;
-    // The event is due at t (a step that reached t ends there).
-    bool event_at(double t_reached) const { return t_reached == event.t; }
+    // A step clipped to t ends at the event.
+    bool reached(bool clipped) const { return clipped && t == event.t; }
   };
   Stop next_stop() const;
   // At the closed-form event e, due now: a cut-off modal search is continued (returns false), a
@@ -93,8 +93,6 @@ class EventCore {
   void promote(Write&& write_runs);
   // Nothing to step (every mobile run is exact): to the next event or sample.
   void jump();
-  // Time moved past the stepped runs without their stepper (a quiet phase).
-  void moved() { epochs.next(); }
 
   const Chain& c;
   State& s;

@@ -71,7 +71,7 @@ void ExactEvolve::step() {
   }
   const bool at_end = !(tau < h);
   const double t_new = !at_end ? s.t + tau : clipped ? stop.t : s.t + h;
-  const bool reached = clipped && stop.event_at(stop.t);  // the step ends at the closed-form event
+  const bool reached = stop.reached(clipped);
   // At a sample right after a switch the runs are those of the last projection, still at s.t:
   // the switch wrote those it read, and the others are written here.
   auto write_for_sample = [&] {

@@ -36,7 +36,7 @@ void SteppedEvolve::step() {
     WorkTimer timer(s.work, s.work.event_location_s);
     theta = search_.locate(core_.c, s, dp_, h_try, core_.active);
   }
-  const bool reached = clipped && stop.event_at(stop.t);  // the step ends at the closed-form event
+  const bool reached = stop.reached(clipped);
   if (theta <= 1.0) {
     step_to_event<Coupled, Damped>(spans, h_try * theta, theta == 1.0 && clipped, stop.t);
     // A closed-form event due at the same instant switches with them.
