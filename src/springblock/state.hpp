@@ -22,14 +22,6 @@ struct State {
   std::vector<std::uint8_t> slipped_once;  // 1 once a contact block has started to slide
   int n_slipped_once = 0;                  // how many contact blocks have slid at least once
   WorkProfile work;                        // where the run's work went (work_profile.hpp)
-  // Set on a sample whose friction sums over the contact blocks the integrator computed itself
-  // (a quiet phase has them from its modes far cheaper than from the positions); an observer of
-  // mu(t) then takes them instead of summing the blocks' forces (Observer::needs_positions_at).
-  struct FrictionSums {
-    bool valid = false;
-    double abs = 0, signed_sum = 0;  // sum of |f_i| and of f_i
-    int n_sliding = 0;
-  } presummed;
 
   // Called by integrators whenever block i starts to slide.
   void mark_slip(int i) {

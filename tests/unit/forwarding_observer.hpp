@@ -10,6 +10,9 @@ class Forwarding : public sb::Observer {
  public:
   explicit Forwarding(sb::FrictionObserver& inner) : inner_(inner) {}
   void sample(const sb::Chain& c, const sb::State& s) override { inner_.sample(c, s); }
+  void sample_ringing(const sb::Chain& c, const sb::State& s, sb::RingingForces& f) override {
+    inner_.sample_ringing(c, s, f);
+  }
   long sample_affine(const sb::Chain& c, const sb::State& s, long k0, double dt, long n,
                      const sb::AffineForces& f) override {
     return inner_.sample_affine(c, s, k0, dt, n, f);

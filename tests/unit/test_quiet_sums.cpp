@@ -1,4 +1,5 @@
-// mu(t) inside a quiet phase from the modes (QuietPhase::friction_sums) against the forces of the
+// mu(t) inside a quiet phase from the forces the phase knows (QuietRinging, summed by the
+// observer's RingingSums) against the forces of the
 // rows the same phase writes (write_sample): equal to round-off, sample by sample, through the
 // ringing, the modes' cut at the settle scales and stuck blocks whose force changes sign. And
 // CommonSlopeSum, the O(1) sum behind it, against the plain sum.
@@ -11,9 +12,10 @@
 #include <vector>
 
 #include "hand_chain.hpp"
-#include "springblock/integrate/linear/common_slope_sum.hpp"
 #include "springblock/integrate/linear/quiet_phase.hpp"
-#include "springblock/integrate/linear/quiet_sums.hpp"
+#include "springblock/integrate/linear/quiet_ringing.hpp"
+#include "springblock/observe/common_slope_sum.hpp"
+#include "springblock/observe/ringing_sums.hpp"
 #include "springblock/state.hpp"
 
 namespace {
@@ -25,7 +27,7 @@ TEST(CommonSlopeSum, EqualsThePlainSumAtAnyTime) {
     std::vector<double> a(57);
     for (double& x : a) x = a_of(rng);
     a[3] = 0.0;  // a force exactly at zero keeps the slope's sign
-    sb::event_detail::CommonSlopeSum sum;
+    sb::CommonSlopeSum sum;
     sum.reset(a.data(), static_cast<int>(a.size()), s);
     // Times in any order, before, between and after the sign changes.
     for (double tau : {0.0, 1.0, 0.05, 0.3, 0.31, 0.001, 2.0, 0.7}) {
@@ -45,7 +47,7 @@ TEST(CommonSlopeSum, SumsOverTimesBetweenCrossingsEqualTheSummedValues) {
   for (double s : {2.5, -0.7, 0.0}) {
     std::vector<double> a(40);
     for (double& x : a) x = a_of(rng);
-    sb::event_detail::CommonSlopeSum sum;
+    sb::CommonSlopeSum sum;
     sum.reset(a.data(), static_cast<int>(a.size()), s);
     int checked = 0;
     for (double tau0 = 0.0; tau0 < 1.0; tau0 += 0.0137) {
@@ -111,7 +113,8 @@ TEST(QuietPhaseSums, EqualTheWrittenRowsForces) {
   const int N = c.N;
   sb::event_detail::RunStore q_store(c);
   sb::event_detail::QuietPhase q(c, q_store);
-  sb::event_detail::QuietSums q_sums(q);
+  sb::event_detail::QuietRinging q_forces(q);
+  sb::RingingSums q_sums(q_forces);
   const double dt = 1e-5;
   q.set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);
@@ -155,7 +158,8 @@ WindowCounts window_sums_against_one_by_one(const std::vector<std::uint8_t>& paw
   const int N = c.N;
   sb::event_detail::RunStore q_store(c), ref_store(c);
   sb::event_detail::QuietPhase q(c, q_store), ref(c, ref_store);
-  sb::event_detail::QuietSums q_sums(q), ref_sums(ref);
+  sb::event_detail::QuietRinging q_forces(q), ref_forces(ref);
+  sb::RingingSums q_sums(q_forces), ref_sums(ref_forces);
   for (auto* p : {&q, &ref}) {
     p->set_sample_dt(dt);
     p->set_sample_scales(1e-14, 1e-10);
@@ -241,14 +245,15 @@ TEST(QuietPhaseSums, EnvelopeHoldsEverySampleOfItsStretch) {
   const sb::State& s = sc.s;
   sb::event_detail::RunStore q_store(c);
   sb::event_detail::QuietPhase q(c, q_store);
-  sb::event_detail::QuietSums q_sums(q);
+  sb::event_detail::QuietRinging q_forces(q);
+  sb::RingingSums q_sums(q_forces);
   q.set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);
   q.begin(c, s.t, s.u.data(), s.v.data());
   const long n = 16;
   int taken = 0, refused = 0, tight = 0;
   for (long k0 = 1001; k0 < 1001 + 100 * n; k0 += n) {
-    sb::SampleStretch::Envelope e{};
+    sb::RingingSums::Envelope e{};
     const bool ok = q_sums.envelope(k0, dt, n, e);
     bool refused_here = !ok;
     for (long j = 0; j < n; ++j) {

@@ -40,6 +40,7 @@ class FanOut final : public Observer {
   FanOut(std::vector<View> views, double sample_dt, Within within);
 
   void sample(const Chain& chain, const State& state) override;
+  void sample_ringing(const Chain& chain, const State& state, RingingForces& f) override;
   // A switch goes to each view whose own run would have made it: one not stopped, at a time
   // within its end (the runs' switches up to there are the shared run's).
   void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) override;
@@ -62,6 +63,8 @@ class FanOut final : public Observer {
   long long index_of(double t) const;
   static long long end_index(const View& v, long long k0, long long k_stop, double dt);
   void record(View& v, const State& s);
+  // The sample at s.t to every view whose own run would take it.
+  void deal(const State& s, const std::function<void(Observer&)>& take);
 
   std::vector<View> views_;
   double sample_dt_;

@@ -59,11 +59,19 @@ AffineTotals block_order_totals(const std::vector<std::pair<int, int>>& contact_
 }
 }  // namespace
 
+RingingSums& FrictionObserver::ringing(RingingForces& f) {
+  if (!ringing_ || &ringing_->forces() != &f) ringing_ = std::make_unique<RingingSums>(f);
+  return *ringing_;
+}
+
+// Nothing slides while the integrator offers its forces this way (a quiet phase).
+void FrictionObserver::sample_ringing(const Chain& c, const State& s, RingingForces& f) {
+  double sum_abs, sum_signed;
+  ringing(f).at(s.t, sum_abs, sum_signed);
+  record(c, s, sum_abs / cfg_.F_load, sum_signed / cfg_.F_load, 0);
+}
+
 void FrictionObserver::sample(const Chain& c, const State& s) {
-  if (s.presummed.valid) {
-    record(c, s, s.presummed.abs / cfg_.F_load, s.presummed.signed_sum / cfg_.F_load, s.presummed.n_sliding);
-    return;
-  }
   // The contact blocks, listed once as runs of consecutive blocks: grooves carry no friction
   // and are skipped without a test.
   if (contact_runs_.empty() && c.n_contact > 0) {
@@ -203,9 +211,10 @@ long FrictionObserver::sample_sums(const Chain& c, const State& s_stretch, long 
   const double t_win = t_slip_ + cfg_.mu_d_skip_s;
   const bool before = t_of(k0 + n - 1) < t_win, inside = t_of(k0) >= t_win;
   if (!before && !inside) return 0;
+  RingingSums& sums = ringing(stretch.forces());
   if (inside) {
     double sum_abs, sum_signed;
-    if (!stretch.sums(k0, n, sum_abs, sum_signed)) return 0;
+    if (!sums.window(k0, dt, n, sum_abs, sum_signed)) return 0;
     sum_mu_ += sum_abs / cfg_.F_load;
     sum_mu_signed_ += sum_signed / cfg_.F_load;
     n_window_ += n;
@@ -214,9 +223,12 @@ long FrictionObserver::sample_sums(const Chain& c, const State& s_stretch, long 
   if (cfg_.keep_series || stress_due(t_of(k_end - 1)))
     for (long k = k0; k < k_end; ++k) {
       const State& s = stretch.at(k);
-      // The values sample() would record for the series (nothing slides in such a block).
-      if (cfg_.keep_series)
-        series_.push_back({s.t, s.presummed.abs / cfg_.F_load, s.presummed.signed_sum / cfg_.F_load, 0});
+      // The values sample_ringing() would record for the series (nothing slides in such a block).
+      if (cfg_.keep_series) {
+        double sum_abs, sum_signed;
+        sums.at(s.t, sum_abs, sum_signed);
+        series_.push_back({s.t, sum_abs / cfg_.F_load, sum_signed / cfg_.F_load, 0});
+      }
       while (stress_due(s.t)) add_snapshot(c, s.t, [&](int i) { return friction_force(c, s, i); });
     }
   last_t_ = t_of(k_end - 1);
@@ -236,8 +248,9 @@ long FrictionObserver::loading_stretch(const Chain& c, const State& s, long k0, 
   if (cfg_.peak_rule != ExtractionRules::PeakRule::AllSlipped || cfg_.keep_series || stress_due(t_of(k0 + n - 1)))
     return 0;
   if (!s.slipped_once.empty() && s.n_slipped_once >= c.n_contact) return 0;
-  SampleStretch::Envelope e{};
-  if (!stretch.envelope(k0, n, e)) return 0;
+  RingingSums& sums = ringing(stretch.forces());
+  RingingSums::Envelope e{};
+  if (!sums.envelope(k0, dt, n, e)) return 0;
   const double F = cfg_.F_load;
   auto line = [n](double first, double last, long j) {
     return n == 1 ? first : first + (last - first) * (static_cast<double>(j) / static_cast<double>(n - 1));
@@ -249,9 +262,11 @@ long FrictionObserver::loading_stretch(const Chain& c, const State& s, long k0, 
         line(e.signed_first, e.signed_last, j) + e.reach < floor_signed)
       continue;
     const State& x = stretch.at(k0 + j);
-    const double mu = x.presummed.abs / F;
+    double sum_abs, sum_signed;
+    sums.at(x.t, sum_abs, sum_signed);
+    const double mu = sum_abs / F;
     if (mu > running_max_) running_max_ = mu, t_max_ = x.t;
-    running_max_signed_ = std::max(running_max_signed_, x.presummed.signed_sum / F);
+    running_max_signed_ = std::max(running_max_signed_, sum_signed / F);
   }
   last_t_ = t_of(k0 + n - 1);
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(last_t_ * 1e9), std::memory_order_relaxed);

@@ -12,7 +12,10 @@
 #include <utility>
 #include <vector>
 
+#include <memory>
+
 #include "springblock/observe/observer.hpp"
+#include "springblock/observe/ringing_sums.hpp"
 #include "springblock/run_control.hpp"
 
 namespace sb {
@@ -45,6 +48,8 @@ class FrictionObserver final : public Observer {
  public:
   explicit FrictionObserver(FrictionObserverConfig cfg) : cfg_(std::move(cfg)) {}
   void sample(const Chain& chain, const State& state) override;
+  // mu(t) from the forces the integrator knows (RingingSums::at), without the positions.
+  void sample_ringing(const Chain& chain, const State& state, RingingForces& f) override;
   // mu(t) and mu_signed(t) are affine across such a stretch (up to the first sign change of a
   // block's force): the running maximum, the end of loading and the mu_d window sums are then
   // closed-form sums over the samples, O(1) per sample instead of O(contact blocks).
@@ -54,7 +59,7 @@ class FrictionObserver final : public Observer {
   // samples before the window is taken without a value, one inside it as its sums, one across
   // the window's start is left to sample(). The series and snapshots of a block taken come from
   // SampleStretch::at, and do not change the sums.
-  // Before it (loading), a stretch is taken from its bounds (SampleStretch::envelope) where they
+  // Before it (loading), a stretch is taken from its bounds (RingingSums::envelope) where they
   // show which samples may hold the peak: only those are looked at (loading_stretch).
   long sample_sums(const Chain& chain, const State& state, long k0, double dt, long n,
                    SampleStretch& stretch) override;
@@ -63,7 +68,7 @@ class FrictionObserver final : public Observer {
   // neighbours' positions); groove interiors are never read.
   bool reads_groove_interiors() const override { return false; }
   bool reads_only_friction() const override { return true; }
-  // mu(t) comes from State::presummed when a sample carries it; positions only for a snapshot.
+  // mu(t) comes from the forces of a sample_ringing; positions only for a snapshot.
   bool needs_positions_at(double t) const override { return stress_due(t); }
 
   // Results.
@@ -88,6 +93,8 @@ class FrictionObserver final : public Observer {
   long loading_stretch(const Chain& c, const State& s, long k0, double dt, long n, SampleStretch& stretch);
   // One sample's mu(t), mu_signed(t) and sliding count into the peak, the window and the series.
   void record(const Chain& c, const State& s, double mu, double mu_signed, int n_sliding);
+  // The sums of the forces f describe, kept for the next phase of the same run.
+  RingingSums& ringing(RingingForces& f);
   // A stress snapshot is due at a sample at time t (the first sample at or after its time).
   bool stress_due(double t) const;
   // Record one at time t from each block's friction force.
@@ -106,6 +113,7 @@ class FrictionObserver final : public Observer {
   // The contact blocks as runs [lo, hi) of consecutive blocks, built on the first sample.
   std::vector<std::pair<int, int>> contact_runs_;
   std::vector<double> f_contact_;  // per block: its friction force at the current sample (sample())
+  std::unique_ptr<RingingSums> ringing_;  // the sums of the integrator's exact forces (sample_ringing)
 };
 
 }  // namespace sb

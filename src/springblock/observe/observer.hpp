@@ -6,33 +6,21 @@
 
 #include "springblock/model.hpp"
 #include "springblock/observe/affine_totals.hpp"
+#include "springblock/observe/ringing_forces.hpp"
 #include "springblock/state.hpp"
 
 namespace sb {
 
-// A stretch of samples an integrator can sum without visiting each one (a quiet phase's: see
-// QuietPhase::window_sums), offered to observers that need only time averages.
+// A stretch of samples in a quiet phase, offered with what the integrator knows exactly of the
+// contact forces there (RingingForces), to observers that need only sums or bounds over it.
 class SampleStretch {
  public:
   virtual ~SampleStretch() = default;
-  // The sums over samples k0 .. k0 + n - 1 of sum_i |f_i| and sum_i f_i (friction forces of the
-  // contact blocks); false when they cannot be had in closed form (then nothing is summed).
-  virtual bool sums(long k0, long n, double& sum_abs, double& sum_signed) = 0;
-  // The state at sample k, its friction sums in State::presummed and, where the observer's
-  // needs_positions_at says so, its positions: for a series or a snapshot. Does not change what
-  // sums() gives.
+  virtual RingingForces& forces() = 0;
+  // The state at sample k, where the observer's needs_positions_at says so with its positions, and
+  // forces() then describing that sample (RingingForces::terms_now): for a series, a snapshot or
+  // a sample that may hold a peak. Changes nothing forces() gives for the stretch.
   virtual const State& at(long k) = 0;
-  // Bounds on the friction sums over samples k0 .. k0 + n - 1 for an observer after their maximum:
-  // at sample k0 + j each sum lies within `reach` of the straight line from its value `first` at
-  // j = 0 to `last` at j = n - 1 (evaluated as first + (last - first) j / (n - 1)), round-off of
-  // the sums, the line and the bounds included. False when there are none (no sign is fixed).
-  struct Envelope {
-    double abs_first, abs_last, signed_first, signed_last, reach;
-  };
-  virtual bool envelope(long k0, long n, Envelope& e) {
-    (void)k0, (void)n, (void)e;
-    return false;
-  }
 };
 
 // The friction forces of a stretch of affine samples: f_i(t) = a[i] + b[i] t for every contact
@@ -66,6 +54,13 @@ class Observer {
   virtual ~Observer() = default;
   // Called at t = 0 and then at every sample time with the state at exactly that time.
   virtual void sample(const Chain& chain, const State& state) = 0;
+  // A sample at which the integrator knows the contact forces exactly (f, at state.t): the state's
+  // positions are written only where needs_positions_at(state.t) says so. The default reads the
+  // state.
+  virtual void sample_ringing(const Chain& chain, const State& state, RingingForces& f) {
+    (void)f;
+    sample(chain, state);
+  }
   // Called after the switching rules were applied at an instant and switched something, with the
   // contact blocks they switched (each once). s.t is the instant, and s.u, s.v and s.dir of those
   // blocks are exact there (the rules read their forces, so the integrator brought them there
@@ -88,9 +83,9 @@ class Observer {
   // the stuck blocks' positions only, so an exact per-block integrator may leave the positions
   // of moving blocks unevaluated at samples.
   virtual bool reads_only_friction() const { return false; }
-  // Whether a sample at time t that carries its friction sums (State::presummed) needs the
-  // positions as well; an integrator may leave them unwritten where no observer needs them. An
-  // observer that reads State::presummed says when it does; the default always needs them.
+  // Whether a sample served through sample_ringing needs the positions as well; an integrator may
+  // leave them unwritten where no observer needs them. An observer that reads the forces instead
+  // says when it does; the default always needs them.
   virtual bool needs_positions_at(double t) const {
     (void)t;
     return true;
@@ -104,8 +99,8 @@ class Observer {
     (void)k0, (void)dt, (void)n, (void)f;
     return 0;
   }
-  // A block of samples t_k = k dt, k = k0 .. k0 + n - 1, inside which nothing switches, offered
-  // as a SampleStretch. An observer takes all of them (returns n) or none (returns 0; the
+  // A block of samples t_k = k dt, k = k0 .. k0 + n - 1, inside a quiet phase, offered as a
+  // SampleStretch. An observer takes all of them (returns n) or none (returns 0; the
   // integrator then serves them one by one with sample()); whether it takes them must not
   // depend on how earlier samples came, so that a trajectory shared by several observers gives
   // each the result of its own run (FanOut). s carries s.dir, the slip counters and the work

@@ -16,6 +16,7 @@ class SwitchTap final : public Observer {
     switches_.switched(c, s, blocks);
   }
   void sample(const Chain& c, const State& s) override { main_.sample(c, s); }
+  void sample_ringing(const Chain& c, const State& s, RingingForces& f) override { main_.sample_ringing(c, s, f); }
   bool wants_stop() const override { return main_.wants_stop(); }
   bool reads_groove_interiors() const override { return main_.reads_groove_interiors(); }
   bool reads_only_friction() const override { return main_.reads_only_friction(); }

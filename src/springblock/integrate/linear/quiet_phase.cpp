@@ -57,6 +57,10 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
         for (int k = 0; k < s.n; ++k) e.march.add_mode(K_int_ * row[k], s.shape->modes[k], s.first + k);
       }
       e.march.finish();
+      EdgeForce f;
+      f.n = e.nseg;
+      for (int n = 0; n < e.nseg; ++n) f.term[n] = 2 * e.seg[n] + (e.row[n] == 0 ? 0 : 1);
+      edges_.forces.push_back(f);
       edges_.list.push_back(std::move(e));
     } else {
       interior_.blocks.push_back(j);
@@ -102,7 +106,8 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
   }
   for (std::size_t k = 0; k < interior_.blocks.size(); ++k)
     interior_.a[k] = c.driving_force(interior_.blocks[k], u, v, t0);
-  for (Edge& e : edges_.list) {
+  for (std::size_t x = 0; x < edges_.list.size(); ++x) {
+    Edge& e = edges_.list[x];
     double a = c.driving_force(e.block, u, v, t0), b = c.K_s * c.v_slider;
     for (int n = 0; n < e.nseg; ++n) {
       const GrooveRun& s = segs_[e.seg[n]];
@@ -111,7 +116,7 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
       for (int k = 0; k < s.n; ++k) a -= c.K_int * row[k] * store_.q0()[s.first + k];
     }
     e.march.set_affine(a, b);
-    e.fa = a, e.fb = b;
+    edges_.forces[x].fa = a, edges_.forces[x].fb = b;
   }
 }
 
@@ -158,7 +163,7 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
     for (int n = 0; n < e.nseg; ++n) modes = modes || segs_[e.seg[n]].dead_tau > 0;
     if (!modes) {
       e.lower = kInf;  // never searched below
-      const double tau = affine_crossing(e.fa, e.fb, c.f_static[e.block]);
+      const double tau = affine_crossing(edges_.forces[k].fa, edges_.forces[k].fb, c.f_static[e.block]);
       if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;
     } else {
       e.lower = e.march.lower_bound(store_.q0(), store_.p0(), c.f_static[e.block]);

@@ -24,7 +24,7 @@
 // the previous sample by each mode's exact transition matrix over the sample spacing (no
 // transcendental calls), and segments whose modes have died out cost only their affine part.
 // What the phase knows of the contact blocks' forces at its samples (each an affine part plus
-// its segments' end rows) is summed in closed form by QuietSums (quiet_sums.hpp).
+// its segments' end rows) it offers to observers as RingingForces (quiet_ringing.hpp).
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +32,7 @@
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
+#include "springblock/observe/ringing_forces.hpp"
 
 namespace sb::event_detail {
 
@@ -45,7 +46,8 @@ class QuietPhase {
     double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
     double sample_dead_tau = 0;  // after this they are below the sample scales (samples skip them)
   };
-  // A contact block and the segments it borders: its force is a + b tau + modal part.
+  // A contact block and the segments it borders: its force is a + b tau + modal part (the
+  // affine part in the phase's EdgeForce of the same index, edge_forces()).
   struct Edge {
     int block;
     int nseg = 0;
@@ -53,7 +55,6 @@ class QuietPhase {
     int row[2] = {0, 0};  // the segment's row of the groove block beside it
     EdgeMarch march;
     double lower = 0;  // lower bound on its crossing in the current phase
-    double fa = 0, fb = 0;  // its force less the modal part: fa + fb tau (begin)
   };
 
   QuietPhase(const Chain& c, RunStore& store);
@@ -79,7 +80,7 @@ class QuietPhase {
   // The recurrence restarts from the closed form at the phase's first sample, after a gap in
   // the spacing, and at every sample whose index is a multiple of kSampleBlock: a sample's value
   // then depends only on its index and the phase, not on which samples were served before it
-  // (QuietSums::window may stand in for a whole block of them).
+  // (an observer may sum a whole block of them from RingingForces::sums).
   static constexpr long kSampleBlock = 64;
   void advance_sample(double t, bool ends_only);
   void write_sample(double t, double* u, double* v, bool ends_only);
@@ -113,15 +114,17 @@ class QuietPhase {
   // positions u; grooves get 0), valid after all_dead_after().
   void affine_forces(const Chain& c, const double* u, double* a, double* b) const;
 
-  // What QuietSums reads: the phase's start, its segments (their records in the store), the
-  // contact blocks beside them (edges) and those beside none (each with its force at t0, all with
-  // the slider's slope K_s v), K_int, and the sample cursor.
+  // What its RingingForces (quiet_ringing.hpp) reads: the phase's start, its segments (their
+  // records in the store), the contact blocks beside them (edges: each force's affine part and
+  // the segment ends it rings with, as RingingForces numbers them) and those beside none (each
+  // with its force at t0, all with the slider's slope K_s v), K_int, and the sample cursor.
   double t0() const { return t0_; }
   double K_int() const { return K_int_; }
   double slider_slope() const { return slider_slope_; }
   const RunStore& store() const { return store_; }
   const std::vector<GrooveRun>& segments() const { return segs_; }
   const std::vector<Edge>& edges() const { return edges_.list; }
+  const std::vector<EdgeForce>& edge_forces() const { return edges_.forces; }
   const std::vector<double>& interior_forces() const { return interior_.a; }
   const Coords& cursor() const { return cursor_.at.x; }
   long phases() const { return interior_.phase; }  // phases begun so far
@@ -129,6 +132,7 @@ class QuietPhase {
  private:
   struct Edges {
     std::vector<Edge> list;
+    std::vector<EdgeForce> forces;  // list[k]'s force: fa + fb tau (begin) and its ringing terms
     std::vector<int> order;  // by increasing lower bound (next_threshold)
   };
   // The contact blocks with no groove neighbour, their forces at t0, and how many phases began.

@@ -5,25 +5,23 @@
 namespace sb::event_detail {
 namespace {
 
-// A SampleStretch from three callables (the quiet phase's sums, its envelope, one sample's state).
-template <class Sums, class Env, class At>
+// A SampleStretch from the quiet phase's forces and a callable giving one sample's state.
+template <class At>
 class StretchOf final : public SampleStretch {
  public:
-  StretchOf(Sums sums, Env env, At at) : sums_(std::move(sums)), env_(std::move(env)), at_(std::move(at)) {}
-  bool sums(long k0, long n, double& sum_abs, double& sum_signed) override { return sums_(k0, n, sum_abs, sum_signed); }
-  bool envelope(long k0, long n, Envelope& e) override { return env_(k0, n, e); }
+  StretchOf(RingingForces& forces, At at) : forces_(forces), at_(std::move(at)) {}
+  RingingForces& forces() override { return forces_; }
   const State& at(long k) override { return at_(k); }
 
  private:
-  Sums sums_;
-  Env env_;
+  RingingForces& forces_;
   At at_;
 };
 
 }  // namespace
 
 QuietEvolve::QuietEvolve(EventCore& core)
-    : core_(core), quiet_(core.c, core.store), sums_(quiet_), sample_(core.s), fa_(core.c.N), fb_(core.c.N) {
+    : core_(core), quiet_(core.c, core.store), ringing_(quiet_), sample_(core.s), fa_(core.c.N), fb_(core.c.N) {
   if (core.opt.ends_only) quiet_.set_sample_scales(core.active.settle_eps_u(), core.active.settle_eps_v());
 }
 
@@ -91,21 +89,16 @@ bool QuietEvolve::serve_samples(double t_next) {
 }
 
 // One sample at sample_.t from the quiet phase's modes. An observer of contact forces alone gets
-// the friction sums straight from the modes (QuietPhase::friction_sums), and the rows only where
-// it needs positions too.
+// them as the modes describe them (sample_ringing), and the rows only where it needs positions
+// too.
 void QuietEvolve::serve_sample() {
   ++core_.s.work.samples;
   stamp_sample();
   quiet_.advance_sample(sample_.t, core_.opt.ends_only);
-  sample_.presummed.valid = core_.opt.ends_only;
-  if (core_.opt.ends_only) {
-    sums_.at(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
-    sample_.presummed.n_sliding = 0;  // nothing slides in a quiet phase
-  }
   if (!core_.opt.ends_only || core_.obs.needs_positions_at(sample_.t))
     quiet_.write_sample(sample_.t, sample_.u.data(), sample_.v.data(), core_.opt.ends_only);
-  core_.obs.sample(core_.c, sample_);
-  sample_.presummed.valid = false;
+  if (core_.opt.ends_only) core_.obs.sample_ringing(core_.c, sample_, ringing_);
+  else core_.obs.sample(core_.c, sample_);
 }
 
 // The clock past `used` samples an observer took at once; if it then wants to stop, the state is
@@ -121,8 +114,8 @@ void QuietEvolve::took_samples(long used, bool& stopped) {
 }
 
 // The samples from the clock's next to the next multiple of QuietPhase::kSampleBlock, before
-// t_stop, offered as one stretch (Observer::sample_sums) with its closed-form sums (window_sums)
-// for an observer of the mu_d window and bounds on each sample (envelope) for an observer of the
+// t_stop, offered as one stretch (Observer::sample_sums) with the forces' closed-form sums over it
+// and bounds from its start (RingingForces), for an observer of the mu_d window or of the
 // loading peak; false when it was not taken (next_offer: the first sample at which a stretch is
 // offered again). The stretch ends where the sample recurrence restarts (an aligned index) or
 // where the phase's samples end, so the samples after it are served as they would be without
@@ -136,13 +129,8 @@ bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offe
   if (n <= 0) return false;
   const double dt = core_.clock.dt();
   long long cursor = k0 - 1;  // the last sample advance_sample was brought to in this stretch
-  bool summed = false;
-  StretchOf stretch(
-      [&](long k, long m, double& sum_abs, double& sum_signed) {
-        return summed = sums_.window(k, dt, m, sum_abs, sum_signed);
-      },
-      [&](long k, long m, SampleStretch::Envelope& e) { return sums_.envelope(k, dt, m, e); },
-      [&](long k) -> const State& {
+  ringing_.clear_summed();
+  StretchOf stretch(ringing_, [&](long k) -> const State& {
         // Several observers of one trajectory (FanOut) each look in order from the stretch's
         // start: a look behind the cursor replays the recurrence from there.
         if (cursor < k0) quiet_.save_cursor();
@@ -150,9 +138,6 @@ bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offe
         while (cursor < k) quiet_.advance_sample(core_.clock.time_of(++cursor), true);
         sample_.t = core_.clock.time_of(k);
         stamp_sample();
-        sample_.presummed.valid = true;
-        sums_.at(sample_.t, sample_.presummed.abs, sample_.presummed.signed_sum);
-        sample_.presummed.n_sliding = 0;
         if (core_.obs.needs_positions_at(sample_.t))
           quiet_.write_sample(sample_.t, sample_.u.data(), sample_.v.data(), true);
         return sample_;
@@ -160,14 +145,13 @@ bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offe
   sample_.t = core_.clock.next();
   stamp_sample();
   const long used = core_.obs.sample_sums(core_.c, sample_, static_cast<long>(k0), dt, n, stretch);
-  sample_.presummed.valid = false;
   if (used < n && cursor >= k0) quiet_.restore_cursor();
   // Declined: its samples are served one by one. Offering its second half again, and so on,
   // cost more mode evaluations than it saved (callgrind, periodic:10,10 N = 360 1 s x4: 1669 M
   // against 1666 M).
   next_offer = k_end;
   if (used <= 0) return false;
-  (summed ? core_.s.work.summed_samples : core_.s.work.peak_samples) += used;
+  (ringing_.summed() ? core_.s.work.summed_samples : core_.s.work.peak_samples) += used;
   took_samples(used, stopped);
   return true;
 }

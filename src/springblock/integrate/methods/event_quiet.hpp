@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "springblock/integrate/linear/quiet_phase.hpp"
-#include "springblock/integrate/linear/quiet_sums.hpp"
+#include "springblock/integrate/linear/quiet_ringing.hpp"
 #include "springblock/integrate/methods/event_core.hpp"
 
 namespace sb::event_detail {
@@ -34,7 +34,7 @@ class QuietEvolve {
 
   EventCore& core_;
   QuietPhase quiet_;
-  QuietSums sums_;  // its samples' friction sums, for an observer of contact forces only
+  QuietRinging ringing_;  // its contact forces, for an observer of those alone
   State sample_;                 // the state at a sample served from the closed form
   std::vector<double> fa_, fb_;  // affine contact forces a + b t once the phase's modes died
   bool affine_ready_ = false;

@@ -1,9 +1,9 @@
-#include "springblock/integrate/linear/common_slope_sum.hpp"
+#include "springblock/observe/common_slope_sum.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace sb::event_detail {
+namespace sb {
 
 void CommonSlopeSum::reset(const double* a, int n, double s) {
   s_ = s;
@@ -60,4 +60,4 @@ void CommonSlopeSum::at(double tau, double& sum_abs, double& sum_signed) const {
   sum_abs = sgn_ * ((same_a_ + crossed + (n_same_ + p) * st) - (waiting + (n_opp - p) * st));
 }
 
-}  // namespace sb::event_detail
+}  // namespace sb

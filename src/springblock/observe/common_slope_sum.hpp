@@ -9,7 +9,7 @@
 // one binary search.
 #include <vector>
 
-namespace sb::event_detail {
+namespace sb {
 
 class CommonSlopeSum {
  public:
@@ -33,4 +33,4 @@ class CommonSlopeSum {
   std::vector<double> opp_prefix_;  // opp_prefix_[p] = sum of a over the first p of them
 };
 
-}  // namespace sb::event_detail
+}  // namespace sb

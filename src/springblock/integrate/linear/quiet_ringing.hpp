@@ -1,0 +1,45 @@
+#pragma once
+// A quiet phase's contact forces as observers read them (RingingForces): the affine parts and
+// segment ends QuietPhase keeps, and its segments' end rows at a sample, summed over samples (the
+// geometric series of each mode's sample transition: Transitions::sample_sum) and bounded from a
+// sample on (each mode's energy never grows: row_deviation_bound). The groups are the phase's
+// segments, their two terms the modal parts of a segment's first and last rows.
+#include "springblock/integrate/linear/coords.hpp"
+#include "springblock/integrate/linear/quiet_phase.hpp"
+#include "springblock/observe/ringing_forces.hpp"
+
+namespace sb::event_detail {
+
+class QuietRinging final : public RingingForces {
+ public:
+  explicit QuietRinging(const QuietPhase& phase);
+
+  double t0() const override { return phase_.t0(); }
+  double K_int() const override { return phase_.K_int(); }
+  long phase() const override { return phase_.phases(); }
+  const std::vector<double>& interior() const override { return phase_.interior_forces(); }
+  double interior_slope() const override { return phase_.slider_slope(); }
+  const std::vector<EdgeForce>& edges() const override { return phase_.edge_forces(); }
+  int groups() const override { return static_cast<int>(phase_.segments().size()); }
+
+  // From the sample cursor (QuietPhase::advance_sample of the same time).
+  void terms_now(double tau, double* x) const override;
+  // The bounds come from the modes at tau0 itself, never from an earlier sample's, so what an
+  // observer does with a stretch depends on the phase and the stretch only, not on which samples
+  // were served before it.
+  bool bounds(double tau0, bool sums_wanted, double* bound) override;
+  void sums(long k0, double dt, long n, double* sum) override;
+  // By the sample recurrence from the modes at the first sample, as advance_sample brings them.
+  void series(long k0, double dt, long n, const int* slot, double* values) override;
+
+  // Whether sums() was asked since the last clear (the work profile counts such samples apart).
+  bool summed() const { return summed_; }
+  void clear_summed() { summed_ = false; }
+
+ private:
+  const QuietPhase& phase_;
+  Coords w0_, w1_;  // per slot: modes at a stretch's first sample (bounds) and past its last live one
+  bool summed_ = false;
+};
+
+}  // namespace sb::event_detail
