@@ -17,6 +17,9 @@ class Forwarding : public sb::Observer {
                      const sb::AffineForces& f) override {
     return inner_.sample_affine(c, s, k0, dt, n, f);
   }
+  void switched(const sb::Chain& c, const sb::State& s, sb::SwitchedBlocks blocks) override {
+    inner_.switched(c, s, blocks);
+  }
   bool wants_stop() const override { return inner_.wants_stop(); }
   bool reads_groove_interiors() const override { return inner_.reads_groove_interiors(); }
   bool reads_only_friction() const override { return inner_.reads_only_friction(); }

@@ -87,14 +87,14 @@ TEST(AffineTotals, EqualTheBlockOrderSumsAcrossSignChanges) {
   EXPECT_GT(crossings, 1000);  // the test saw forces that had crossed zero since they were set
 }
 
-// Forwards to a friction observer without the integrator's totals, so it sums every stretch over
-// the chain in block order, as before the tree.
+// Forwards to a friction observer per-block stretches as any others, so it sums every stretch over
+// the chain in block order instead of keeping the tree.
 class SumsItself final : public sbtest::Forwarding {
  public:
   using Forwarding::Forwarding;
   long sample_affine(const sb::Chain& c, const sb::State& s, long k0, double dt, long n,
                      const sb::AffineForces& f) override {
-    with_totals += f.totals != nullptr;
+    with_totals += f.per_block;
     return inner_.sample_affine(c, s, k0, dt, n, sb::AffineForces{f.a, f.b});
   }
   long with_totals = 0;

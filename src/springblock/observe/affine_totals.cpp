@@ -61,4 +61,22 @@ const AffineTotals& AffineForceTree::at(double t_first) {
   return node_[1];
 }
 
+void SwitchedTotals::switched(const int* first, const int* last) {
+  if (!tree_) return;  // the first stretch sets every leaf
+  for (const int* i = first; i != last; ++i)
+    if (!flagged_[*i]) flagged_[*i] = 1, dirty_.push_back(*i);
+}
+
+const AffineTotals& SwitchedTotals::at(const Chain& c, const State& s, const double* a, const double* b,
+                                       double t_first) {
+  if (!tree_) {
+    tree_ = std::make_unique<AffineForceTree>(c);
+    flagged_.assign(c.N, 0);
+    for (int i = 0; i < c.N; ++i) tree_->set(i, a[i], b[i], s.dir[i] != 0, t_first);
+  }
+  for (int i : dirty_) tree_->set(i, a[i], b[i], s.dir[i] != 0, t_first), flagged_[i] = 0;
+  dirty_.clear();
+  return tree_->at(t_first);
+}
+
 }  // namespace sb

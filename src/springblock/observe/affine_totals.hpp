@@ -17,9 +17,11 @@
 // current values, not on the history of updates (no drift, the same doubles whatever the order
 // of the events that set them).
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "springblock/model.hpp"
+#include "springblock/state.hpp"
 
 namespace sb {
 
@@ -61,6 +63,23 @@ class AffineForceTree {
   std::vector<double> a_, b_;          // per block
   std::vector<std::uint8_t> sliding_;  // per block
   std::vector<AffineTotals> node_;     // 1-based heap order; leaf k is node size_ + k
+};
+
+// The tree kept by an observer of a run whose forces change only when their own block switches
+// (AffineForces::per_block, the per-block solver): the blocks switched since the last stretch
+// (switched) have their leaves set again from the integrator's forces when the next stretch
+// starts (at), every contact block's on the first. A leaf set at the stretch's start rather than
+// at its block's switch takes the same sign: a force that changed sign in between was due to, and
+// takes its sign again at the stretch's start either way.
+class SwitchedTotals {
+ public:
+  void switched(const int* first, const int* last);
+  const AffineTotals& at(const Chain& c, const State& s, const double* a, const double* b, double t_first);
+
+ private:
+  std::unique_ptr<AffineForceTree> tree_;
+  std::vector<int> dirty_;
+  std::vector<char> flagged_;  // per block: in dirty_
 };
 
 }  // namespace sb

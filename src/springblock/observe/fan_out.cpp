@@ -63,9 +63,7 @@ long FanOut::sample_affine(const Chain& c, const State& s, long k0, double dt, l
     const long long hi = end_index(v, k0, k_stop, dt), lo = std::max<long long>(k0, v.next_k);
     long long reached = lo;
     if (lo < hi) {
-      // The integrator's totals hold for a stretch from k0; a view that starts later sums its own.
-      const AffineForces g = lo == k0 ? f : AffineForces{f.a, f.b};
-      const long used = v.obs->sample_affine(c, s, static_cast<long>(lo), dt, static_cast<long>(hi - lo), g);
+      const long used = v.obs->sample_affine(c, s, static_cast<long>(lo), dt, static_cast<long>(hi - lo), f);
       if (used > 0) {
         v.next_k = lo + used;
         record(v, s);

@@ -131,6 +131,10 @@ void FrictionObserver::record(const Chain& c, const State& s, double mu, double 
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(s.t * 1e9), std::memory_order_relaxed);
 }
 
+void FrictionObserver::switched(const Chain&, const State&, SwitchedBlocks blocks) {
+  switched_totals_.switched(blocks.begin(), blocks.end());
+}
+
 long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, double dt, long n,
                                      const AffineForces& f) {
   // A stretch feeds the statistics, the series and the stress snapshots alike (record_stretch),
@@ -141,9 +145,11 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   const double t_first = t_of(k0);
   const double *a = f.a, *b = f.b;
   // The stretch ends before the first sample at which some block's force changes sign. The
-  // totals over the contact blocks come from the integrator where it keeps them (the same signs,
-  // summed in another order), or are summed here in block order.
-  const AffineTotals sum = f.totals ? *f.totals : block_order_totals(contact_runs_, s, a, b, t_first);
+  // totals over the contact blocks are kept from stretch to stretch where the forces change only
+  // at their own block's switches (the same signs, summed in the tree's order), or are summed
+  // here in block order.
+  const AffineTotals sum = f.per_block ? switched_totals_.at(c, s, a, b, t_first)
+                                       : block_order_totals(contact_runs_, s, a, b, t_first);
   const double A = sum.A, B = sum.B, As = sum.As, Bs = sum.Bs, t_sign = sum.t_sign;
   const int n_sliding = sum.n_sliding;
   long m = n;

@@ -55,6 +55,8 @@ class FrictionObserver final : public Observer {
   // closed-form sums over the samples, O(1) per sample instead of O(contact blocks).
   long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n,
                      const AffineForces& f) override;
+  // The blocks whose forces changed, for the totals of per-block stretches.
+  void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) override;
   // After loading, mu_s is fixed and only the mu_d window's sums are still to come: a block of
   // samples before the window is taken without a value, one inside it as its sums, one across
   // the window's start is left to sample(). The series and snapshots of a block taken come from
@@ -113,6 +115,7 @@ class FrictionObserver final : public Observer {
   // The contact blocks as runs [lo, hi) of consecutive blocks, built on the first sample.
   std::vector<std::pair<int, int>> contact_runs_;
   std::vector<double> f_contact_;  // per block: its friction force at the current sample (sample())
+  SwitchedTotals switched_totals_;  // a per-block run's stretch totals (AffineForces::per_block)
   std::unique_ptr<RingingSums> ringing_;  // the sums of the integrator's exact forces (sample_ringing)
 };
 

@@ -24,13 +24,12 @@ class SampleStretch {
 };
 
 // The friction forces of a stretch of affine samples: f_i(t) = a[i] + b[i] t for every contact
-// block, and, where the integrator keeps them (totals != nullptr), the sums over the contact
-// blocks a stretch starting at its first sample needs (affine_totals.hpp), which an observer then
-// need not form itself.
+// block. per_block: each force changes only when its own block switches (Observer::switched), so
+// an observer may keep sums over the blocks from one stretch to the next (SwitchedTotals).
 struct AffineForces {
   const double* a;
   const double* b;
-  const AffineTotals* totals = nullptr;
+  bool per_block = false;
 };
 
 // The contact blocks switched at one instant, as the integrator holds them (a list, or one block),

@@ -28,21 +28,23 @@ RingingSums::RingingSums(RingingForces& forces)
       slot_(static_cast<std::size_t>(forces.groups())) {}
 
 void RingingSums::prepare() {
-  if (interior_of_ == f_.phase()) return;
+  const long phase = f_.phase();
+  if (interior_of_ == phase) return;
   const std::vector<double>& a = f_.interior();
   interior_.reset(a.data(), static_cast<int>(a.size()), f_.interior_slope());
-  interior_of_ = f_.phase();
+  interior_of_ = phase;
+  t0_ = f_.t0(), K_int_ = f_.K_int();
+  edges_ = &f_.edges();
 }
 
 void RingingSums::at(double t, double& sum_abs, double& sum_signed) {
-  const double tau = t - f_.t0();
   prepare();
+  const double tau = t - t0_;
   interior_.at(tau, sum_abs, sum_signed);
   f_.terms_now(tau, terms_.data());
-  const double K_int = f_.K_int();
-  for (const EdgeForce& e : f_.edges()) {
+  for (const EdgeForce& e : *edges_) {
     double f = e.fa + e.fb * tau;
-    for (int r = 0; r < e.n; ++r) f += K_int * terms_[e.term[r]];
+    for (int r = 0; r < e.n; ++r) f += K_int_ * terms_[e.term[r]];
     sum_abs += std::fabs(f);
     sum_signed += f;
   }
@@ -54,12 +56,11 @@ void RingingSums::at(double t, double& sum_abs, double& sum_signed) {
 // flagged in unsure_ instead of failing the test, and false when the ringing has no closed-form
 // sample sum.
 bool RingingSums::keeps_signs(double tau0, double tau_last, bool need_sums) {
-  prepare();
   if (!need_sums && interior_.crossed(tau_last) != interior_.crossed(tau0)) return false;
   if (!f_.bounds(tau0, need_sums, bound_.data())) return false;
   // Edge forces: the affine part keeps clear of the ringing's reach, on the side it starts on, at
   // both ends of the stretch (so everywhere between).
-  const std::vector<EdgeForce>& edges = f_.edges();
+  const std::vector<EdgeForce>& edges = *edges_;
   if (need_sums) unsure_.assign(edges.size(), 0);
   for (std::size_t k = 0; k < edges.size(); ++k) {
     const EdgeForce& e = edges[k];
@@ -74,14 +75,15 @@ bool RingingSums::keeps_signs(double tau0, double tau_last, bool need_sums) {
 
 double RingingSums::edge_reach(const EdgeForce& e) const {
   double reach = 0;
-  for (int r = 0; r < e.n; ++r) reach += f_.K_int() * bound_[e.term[r]];
+  for (int r = 0; r < e.n; ++r) reach += K_int_ * bound_[e.term[r]];
   return reach;
 }
 
 bool RingingSums::window(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
   sum_abs = sum_signed = 0;
   if (n <= 0) return false;
-  const double t0 = f_.t0();
+  prepare();
+  const double t0 = t0_;
   auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0; };
   const double tau0 = tau_of(k0);
   if (!keeps_signs(tau0, tau_of(k0 + n - 1), true)) return false;
@@ -112,8 +114,8 @@ bool RingingSums::window(long k0, double dt, long n, double& sum_abs, double& su
     j += m;
   }
   sum_abs = interior_abs, sum_signed = interior_signed;
-  const std::vector<EdgeForce>& edges = f_.edges();
-  const double K_int = f_.K_int();
+  const std::vector<EdgeForce>& edges = *edges_;
+  const double K_int = K_int_;
   for (std::size_t k = 0; k < edges.size(); ++k) {
     if (unsure_[k]) continue;
     const EdgeForce& e = edges[k];
@@ -127,11 +129,11 @@ bool RingingSums::window(long k0, double dt, long n, double& sum_abs, double& su
 }
 
 void RingingSums::unsure_sums(long k0, double dt, long n, double& sum_abs, double& sum_signed) {
-  const double t0 = f_.t0();
+  const double t0 = t0_;
   auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0; };
   // The groups beside the flagged edges, each given a slot of 2 n values: its two terms at each
   // sample.
-  const std::vector<EdgeForce>& edges = f_.edges();
+  const std::vector<EdgeForce>& edges = *edges_;
   std::fill(slot_.begin(), slot_.end(), -1);
   int slots = 0;
   for (std::size_t k = 0; k < edges.size(); ++k)
@@ -142,7 +144,7 @@ void RingingSums::unsure_sums(long k0, double dt, long n, double& sum_abs, doubl
   const std::size_t nn = static_cast<std::size_t>(n);
   values_.assign(2 * nn * static_cast<std::size_t>(slots), 0.0);
   f_.series(k0, dt, n, slot_.data(), values_.data());
-  const double K_int = f_.K_int();
+  const double K_int = K_int_;
   for (std::size_t k = 0; k < edges.size(); ++k) {
     if (!unsure_[k]) continue;
     const EdgeForce& e = edges[k];
@@ -163,14 +165,15 @@ void RingingSums::unsure_sums(long k0, double dt, long n, double& sum_abs, doubl
 // millions of times their round-off, keeps the bound a bound.
 bool RingingSums::envelope(long k0, double dt, long n, Envelope& env) {
   if (n <= 0) return false;
-  const double t0 = f_.t0();
+  prepare();
+  const double t0 = t0_;
   auto tau_of = [&](long k) { return static_cast<double>(k) * dt - t0; };
   const double tau0 = tau_of(k0), tau1 = tau_of(k0 + n - 1);
   if (!keeps_signs(tau0, tau1, false)) return false;
   interior_.at(tau0, env.abs_first, env.signed_first);
   interior_.at(tau1, env.abs_last, env.signed_last);
   double reach = 0;
-  for (const EdgeForce& e : f_.edges()) {
+  for (const EdgeForce& e : *edges_) {
     const double f0 = e.fa + e.fb * tau0, f1 = e.fa + e.fb * tau1, sg = f0 >= 0 ? 1.0 : -1.0;
     env.abs_first += sg * f0, env.abs_last += sg * f1;
     env.signed_first += f0, env.signed_last += f1;

@@ -29,7 +29,7 @@ class Solver {
         log_(log),
         b_(c.N),
         mode_{0.5 * c.gamma, c.K_s / c.m},
-        forces_(c) {}
+        friction_{std::vector<double>(c.N, 0.0), std::vector<double>(c.N, 0.0)} {}
 
   void run(double t_end, double sample_dt, Observer& obs);
 
@@ -68,12 +68,13 @@ class Solver {
   // Apply the stick/slip rules to block i at time t (after its event, or at the start).
   void apply_rules_at(int i, double t, bool event_here);
   void materialise(double t);
-  // Block i's friction force as a + b t from time t until its next event (for sample_affine,
-  // with the chain's totals): a stuck block's is its driving force K_s (v t - u_i), a sliding
-  // block's its constant kinetic friction.
-  void update_friction(int i, double t) {
-    if (s_.dir[i] == 0) forces_.set(i, -c_.K_s * s_.u[i], c_.K_s * c_.v_slider, false, t);
-    else forces_.set(i, s_.dir[i] * c_.f_kinetic[i], 0.0, true, t);
+  // Block i's friction force as a + b t until its next event (for sample_affine): a stuck
+  // block's is its driving force K_s (v t - u_i), a sliding block's its constant kinetic
+  // friction. It changes only at the block's own events (per_block stretches).
+  void update_friction(int i) {
+    if (!c_.contact[i]) return;
+    if (s_.dir[i] == 0) friction_.a[i] = -c_.K_s * s_.u[i], friction_.b[i] = c_.K_s * c_.v_slider;
+    else friction_.a[i] = s_.dir[i] * c_.f_kinetic[i], friction_.b[i] = 0.0;
   }
 
   const Chain& c_;
@@ -81,7 +82,9 @@ class Solver {
   std::vector<double>* log_;
   std::vector<Block> b_;
   DampedMode mode_;
-  AffineForceTree forces_;  // each block's friction force a + b t between its events, and their totals
+  struct {
+    std::vector<double> a, b;
+  } friction_;  // each block's friction force a + b t between its events
   long long evals_ = 0;
   double instant_ = -1;
   long long at_instant_ = 0;
@@ -138,7 +141,7 @@ void Solver::apply_rules_at(int i, double t, bool event_here) {
     at_instant_ += made;
     s_.switches += made;
     if (made > 0 && log_ && (log_->empty() || log_->back() != t)) log_->push_back(t);
-    update_friction(i, t);
+    update_friction(i);
   }
   WorkTimer timer(s_.work, s_.work.event_location_s);
   if (s_.dir[i] != 0) {
@@ -165,7 +168,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
     if (s_.dir[i] != 0) {
       start_moving(i, t0, s_.dir[i] * c_.f_kinetic[i]);
       schedule(i, first_stop(i));
-      update_friction(i, t0);
+      update_friction(i);
     } else {
       const auto switches_before = s_.switches;
       apply_rules_at(i, t0, false);
@@ -213,9 +216,8 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       const long long k = clock.index(), k_end = clock.first_at_or_after(t_stop);
       const long used = [&] {
         WorkTimer timer(s_.work, s_.work.sampling_s);
-        const AffineTotals& totals = forces_.at(static_cast<double>(k) * sample_dt);
         return obs.sample_affine(c_, s_, static_cast<long>(k), sample_dt, static_cast<long>(k_end - k),
-                                 AffineForces{forces_.a(), forces_.b(), &totals});
+                                 AffineForces{friction_.a.data(), friction_.b.data(), true});
       }();
       if (used > 0) {
         s_.work.stretch_samples += used;
