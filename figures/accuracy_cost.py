@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Work-precision diagram of the first macroscopic peak (N = 360, periodic:10,10, per-seed error of
 mu_s against the converged event reference): error against wall time (a) and against
-right-hand-side evaluations (b), log-log, one line per integration method (the event method's exact
-stepper evaluates no right-hand side and is in panel (a) only). RHS evaluations are
+right-hand-side evaluations (b), log-log, one line per integration method and stepper (the event method's
+exact stepper evaluates no right-hand side: in panel (b) its error level is a dashed line). RHS evaluations are
 machine independent; wall time is what a user pays. The reference's own convergence (tol 1e-11
 against 1e-12) is drawn as a horizontal line: errors below it are not resolved. Settings that
 failed are named in the legend, not dropped. (c): cost of the event method per simulated second
@@ -23,22 +23,43 @@ def work_precision_panels(pa, pb, doc, extra):
         style.not_produced(pb, "accuracy_cost")
         return
     floor = [r["error"] for r in rows if r.get("reference_check")]
-    methods = sorted({r["method"] for r in rows} | {f["setting"].split()[0] for f in failed})
-    for i, m in enumerate(methods):
+    # One line per method and stepper: the event method's exact and Dormand-Prince steppers are
+    # different integrators (drawn as one line, their labels fell on top of each other).
+    def line_of(r):
+        return r["method"] + (f" ({r['stepper']})" if r.get("stepper") else "")
+
+    def line_of_failed(f):
+        # Settings are named "rk4 h=...", "dopri5 tol=..." or "exact tol=..." (reproduce/work_precision.cpp).
+        first = f["setting"].split()[0]
+        return first if first == "rk4" else f"event ({first})"
+
+    lines = sorted({line_of(r) for r in rows} | {line_of_failed(f) for f in failed})
+    for i, m in enumerate(lines):
         c = style.COLOURS[i % len(style.COLOURS)]
-        bad = [f["setting"] for f in failed if f["setting"].split()[0] == m]
+        bad = [f["setting"] for f in failed if line_of_failed(f) == m]
         label = m + (f" (failed: {', '.join(bad)})" if bad else "")
-        pts = [r for r in rows if r["method"] == m and not r.get("reference") and not r.get("reference_check")
+        pts = [r for r in rows if line_of(r) == m and not r.get("reference") and not r.get("reference_check")
                and r.get("error", 0) > 0]
         for ax, key in ((pa, "wall_seconds"), (pb, "rhs_evals_total")):
-            # The exact stepper evaluates no right-hand side: it has no point on a log axis of them.
             p = sorted((r for r in pts if r[key] > 0), key=lambda r: r[key])
             if p:
                 ax.plot([r[key] for r in p], [r["error"] for r in p], "o-", color=c, ms=3.5, label=label)
+                # Settings whose points coincide (the exact stepper has no step-size error, so its
+                # tolerance does not move it) share one label instead of printing over each other.
+                tags = {}
                 for r in p:
-                    tag = f"h={r['dt_s']:g}" if m == "rk4" else f"tol={r['tol']:g}"
-                    ax.annotate(tag, (r[key], r["error"]), fontsize=5.5, xytext=(3, 3),
-                                textcoords="offset points", color=c)
+                    tag = f"h={r['dt_s']:g}" if r["method"] == "rk4" else f"tol={r['tol']:g}"
+                    spot = next((q for q in tags if abs(q[0] / r[key] - 1) < 0.5 and abs(q[1] / r["error"] - 1) < 0.5),
+                                (r[key], r["error"]))
+                    tags.setdefault(spot, []).append(tag)
+                for (x, y), names in tags.items():
+                    ax.annotate(", ".join(names), (x, y), fontsize=5.5, xytext=(3, 3), textcoords="offset points",
+                                color=c)
+            elif ax is pb and pts:
+                # No right-hand side evaluated: no point on this axis; its error level is drawn
+                # across the panel so the comparison is still there.
+                err = max(r["error"] for r in pts)
+                ax.axhline(err, color=c, lw=1.0, ls="--", label=f"{m}: no RHS evaluations")
             elif ax is pa:
                 ax.plot([], [], "x", color=c, label=label + " (no successful run)")
     for ax in (pa, pb):
@@ -50,6 +71,7 @@ def work_precision_panels(pa, pb, doc, extra):
     pb.set_xlabel("right-hand-side evaluations")
     pa.set_ylabel(r"max over seeds |error| of first-peak $(\mu_s)_M$")
     pa.legend(fontsize=6)
+    pb.legend(fontsize=6, loc="center right", bbox_to_anchor=(1.0, 0.3))
 
 
 def fit_label(pattern, fit):

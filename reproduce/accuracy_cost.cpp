@@ -8,8 +8,8 @@ from 1e-6 to 1e-8, which brackets its default: the loosest decade whose first-pe
 a tenth of the smallest mu_s standard error of the reproduction), and for its exact stepper, the
 default, which moves sliding runs by their modes and has no step-size error (its tolerance only
 sets when a ringing groove counts as settled, and the tolerance of the Dormand-Prince steps of
-runs longer than exact_max_run); it takes no right-hand-side evaluations, so panel (b) has none of
-its points. RK4 below the paper's step
+runs longer than exact_max_run); it takes no right-hand-side evaluations, so panel (b) draws its
+error level as a dashed line instead of points. RK4 below the paper's step
 (0.5 and 0.25 x 1e-7 s) costs more than everything else here together; it is the optional study
 rk4_refinement (`make studies`, committed under paper/data/), drawn in the same figure.
 Scene: (A) first macroscopic peak, N = 360, L_x = 7.2 cm, periodic:10,10 (grooves keep RK4 from
