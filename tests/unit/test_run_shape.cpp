@@ -9,7 +9,9 @@
 #include <string>
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 
+#include "springblock/integrate/linear/general_modes.hpp"
 #include "springblock/integrate/linear/run_shape.hpp"
 
 namespace {
@@ -100,3 +102,56 @@ TEST(RunShape, TheResidualTestSeesAWrongEnd) {
 }
 
 }  // namespace
+
+// The general modes (general_modes.cpp) of runs whose blocks differ: K Q = W Q diag(lambda) with
+// Q^T W Q = I, eigenvalues rising and equal to those of the dense generalised problem; on equal
+// blocks they are the closed form's (up to each column's sign). Weights or springs read from the
+// wrong rows fail the residual.
+TEST(GeneralModes, SolveTheWeightedProblem) {
+  const sb::Chain c = chain();
+  std::uint64_t x = 12345;
+  auto uniform01 = [&x] {
+    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(x >> 11) * 0x1.0p-53;
+  };
+  for (int n : {1, 2, 3, 7, 40, 120})
+    for (bool left : {false, true})
+      for (bool right : {false, true}) {
+        SCOPED_TRACE("n = " + std::to_string(n) + " left " + std::to_string(left) + " right " + std::to_string(right));
+        sb::event_detail::Factors K;
+        std::vector<double> w(n), springs(n + 1);
+        for (double& s : springs) s = c.K_int * (0.1 + 9.9 * uniform01());  // contrast up to 100
+        for (int r = 0; r < n; ++r) {
+          w[r] = 0.2 + 4.8 * uniform01();
+          const double k_s = c.K_s * (0.5 + uniform01());
+          K.diag.push_back(k_s + ((r > 0 || left) ? springs[r] : 0.0) + ((r + 1 < n || right) ? springs[r + 1] : 0.0));
+          if (r + 1 < n) K.off.push_back(-springs[r + 1]);
+        }
+        Eigen::MatrixXd Q;
+        std::vector<double> lambda;
+        sb::event_detail::general_modes(K, w, Q, lambda);
+        const Eigen::MatrixXd Kd = K.dense();
+        const Eigen::VectorXd wv = vec(w);
+        const double scale = Kd.cwiseAbs().maxCoeff();
+        const Eigen::MatrixXd residual = Kd * Q - wv.asDiagonal() * Q * vec(lambda).asDiagonal();
+        EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-12 * scale);
+        const Eigen::MatrixXd gram = Q.transpose() * wv.asDiagonal() * Q - Eigen::MatrixXd::Identity(n, n);
+        EXPECT_LT(gram.cwiseAbs().maxCoeff(), 1e-12);
+        Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kd, Eigen::MatrixXd(wv.asDiagonal()));
+        for (int k = 0; k < n; ++k) EXPECT_NEAR(lambda[k], es.eigenvalues()[k], 1e-12 * scale) << "mode " << k;
+      }
+  // Equal blocks: the closed form's modes and eigenvalues.
+  RunShapes shapes(c);
+  for (int n : {1, 4, 33}) {
+    const RunShape& b = shapes.get(n, true, false);
+    Eigen::MatrixXd Q;
+    std::vector<double> lambda;
+    sb::event_detail::general_modes(b.K, std::vector<double>(n, 1.0), Q, lambda);
+    const double scale = c.K_s + 4.0 * c.K_int;
+    for (int k = 0; k < n; ++k) {
+      EXPECT_NEAR(lambda[k], b.spectrum.lambda[k], 1e-12 * scale);
+      const double sign = Q.col(k).dot(b.Q.col(k)) < 0 ? -1.0 : 1.0;
+      EXPECT_LT((sign * Q.col(k) - b.Q.col(k)).cwiseAbs().maxCoeff(), 1e-10) << "n " << n << " mode " << k;
+    }
+  }
+}
