@@ -16,6 +16,7 @@
 #include "springblock/design/report.hpp"
 #include "springblock/errors.hpp"
 #include "springblock/scene_fields.hpp"
+#include "springblock/surface_mask.hpp"
 
 namespace sb::app {
 
@@ -116,7 +117,7 @@ void print_table(const design::Query& q, const design::Outcome& o) {
   std::printf("%-3s %-22s %7s %-17s %-17s %s\n", "#", "pattern", "S/Stot", "mu_s", "mu_d", "meets");
   for (std::size_t i = 0; i < o.verified.size(); ++i) {
     const auto& v = o.verified[i];
-    std::printf("%-3zu %-22s %7.4f %-17s %-17s %s\n", i + 1, o.candidates.kept[v.candidate].spec.text().c_str(),
+    std::printf("%-3zu %-22s %7.4f %-17s %-17s %s\n", i + 1, pattern_label(o.candidates.kept[v.candidate].spec).c_str(),
                 o.candidates.kept[v.candidate].contact_fraction, statistic_text(v.mu_s).c_str(),
                 statistic_text(v.mu_d).c_str(), v.meets_target ? "yes" : "no");
   }

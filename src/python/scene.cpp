@@ -8,6 +8,7 @@
 #include "springblock/errors.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/scene_fields.hpp"
+#include "springblock/surface_mask.hpp"
 
 namespace sb::python {
 namespace {
@@ -32,7 +33,8 @@ sb::Scene with_fields(sb::Scene scene, const py::dict& fields) {
   for (auto [key, value] : fields) {
     if (!py::isinstance<py::str>(key))
       throw sb::InputError(py::repr(key).cast<std::string>(), "a field name must be a string");
-    j[key.cast<std::string>()] = field_text(value);
+    const auto name = key.cast<std::string>();
+    j[name] = name == "pattern" ? pattern_value(value) : field_text(value);
   }
   sb::apply_scene_json(scene, j);
   sb::validate(scene);
@@ -53,7 +55,7 @@ sb::Scene make_scene(const py::object& fields, const py::kwargs& more) {
 std::string scene_repr(const sb::Scene& s) {
   char text[256];
   std::snprintf(text, sizeof text, "springblock.Scene(N=%d, length=%gm, pattern='%s', method='%s', reps=%d, seed=%llu)",
-                s.geometry.N, s.geometry.L_x_m, s.pattern.text().c_str(), sb::method_name(s.run.method).c_str(),
+                s.geometry.N, s.geometry.L_x_m, sb::pattern_label(s.pattern).c_str(), sb::method_name(s.run.method).c_str(),
                 s.reps, static_cast<unsigned long long>(s.seed));
   return text;
 }
