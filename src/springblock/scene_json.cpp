@@ -17,8 +17,9 @@ namespace {
 // ones by their counts and hash, which tie a result to its surface as surely.
 constexpr std::size_t kRecordedDigits = 10000;
 
-// A mask surface as results record it, beside the pattern's text: a file's path says nothing of
-// what the file held when the run was made, its blocks do.
+}  // namespace
+
+// A file's path says nothing of what the file held when the run was made; its blocks do.
 nlohmann::json mask_record(const PatternSpec& p) {
   nlohmann::json j{{"source", p.mask_path.empty() ? "inline" : "file"},
                    {"blocks", p.mask.size()},
@@ -30,8 +31,6 @@ nlohmann::json mask_record(const PatternSpec& p) {
   }
   return j;
 }
-
-}  // namespace
 
 void to_json(nlohmann::json& j, const Scene& s) {
   j = nlohmann::json{{"material", s.material},
