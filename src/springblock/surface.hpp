@@ -44,7 +44,7 @@ struct PatternSpec {
   std::vector<Layout> layout = {Layout::Symmetric, Layout::PawlFirst};
   // Canonical spec string, e.g. "periodic:2,1" (without the layout); parse_pattern(text()) gives
   // this spec back. An inline mask is its digits ("mask:0110"), a file mask "mask:@PATH" (which
-  // names the file, not its content: see mask_hash and surface_key in surface_mask.hpp).
+  // names the file, not its content: see mask_hash in surface_mask.hpp).
   std::string text() const;
   int pawl_size(std::size_t level) const;  // hierarchical: level's pawl size (level 0 is level 1)
   std::string layout_text() const; // e.g. "symmetric" or "symmetric,pawl_first"

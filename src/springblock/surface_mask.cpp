@@ -150,10 +150,6 @@ std::string mask_hash(const std::vector<std::uint8_t>& mask) {
   return buf;
 }
 
-std::string surface_key(const PatternSpec& spec) {
-  return spec.kind == SurfaceKind::Mask ? "mask:" + mask_digits(spec.mask) : spec.text();
-}
-
 std::string pattern_label(const PatternSpec& spec) {
   if (spec.kind != SurfaceKind::Mask || (spec.mask_path.empty() && spec.mask.size() <= 40)) return spec.text();
   const auto pawls = std::count(spec.mask.begin(), spec.mask.end(), std::uint8_t{1});

@@ -5,8 +5,8 @@
 // path is read from the working directory, as every other path the program is given.
 //
 // A mask's text() names a file by its path, which says nothing about what the file held when a
-// result was made; mask_hash is what ties a result to its surface, and surface_key is what
-// scenes that may share runs are compared on.
+// result was made: mask_hash is what ties a result to its surface, and scenes that may share runs
+// are compared on the blocks themselves (trajectory_spec.cpp).
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -38,11 +38,6 @@ std::string mask_digits(const std::vector<std::uint8_t>& mask);
 
 // 64-bit FNV-1a of mask_digits(mask), as 16 lower-case hex digits.
 std::string mask_hash(const std::vector<std::uint8_t>& mask);
-
-// What decides a surface's blocks: text() for the parametric kinds, the mask's digits for a mask
-// (so a file and an inline mask with the same blocks are one surface, and a file edited between
-// two scenes is not).
-std::string surface_key(const PatternSpec& spec);
 
 // text() for one-line summaries: a mask longer than 40 blocks is shown by its first 24 blocks,
 // its length, pawl count and hash; a file mask by its path and the same numbers.
