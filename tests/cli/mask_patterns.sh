@@ -46,6 +46,21 @@ if "pattern_mask" in p["scene"]: bad.append("a periodic scene has a pattern_mask
 if bad: print("FAIL mask run:\n  " + "\n  ".join(bad)); sys.exit(1)
 PY
 
+# The equal-size form and its P/G spelling are one surface: the same numbers, the same pattern text.
+# shellcheck disable=SC2086
+"$sb" run $small --pattern hierarchical:12,4 --json >"$dir/equal.json" || { echo "FAIL run hierarchical:12,4"; fail=1; }
+# shellcheck disable=SC2086
+"$sb" run $small --pattern hierarchical:12/12,4/4 --json >"$dir/pg.json" || { echo "FAIL run P/G"; fail=1; }
+"$py" - "$dir" <<'PY' || fail=1
+import json, sys
+a, b = (json.load(open(f"{sys.argv[1]}/{n}.json")) for n in ("equal", "pg"))
+bad = [k for k in ("mu_s", "mu_d", "contact_fraction") if a[k] != b[k]]
+per_run = lambda j: [(r["mu_s"], r["mu_d"]) for r in j["runs"]]  # not their timings
+if per_run(a) != per_run(b): bad.append("runs")
+if b["scene"]["pattern"] != "hierarchical:12,4": bad.append("pattern " + b["scene"]["pattern"])
+if bad: print("FAIL hierarchical:12/12,4/4 differs from hierarchical:12,4 in " + ", ".join(bad)); sys.exit(1)
+PY
+
 # Scene files and sweeps take the same strings.
 printf '{"N": 60, "reps": 3, "seed": 7, "duration": "3t0", "pattern": "mask:@%s"}' "$dir/periodic.mask" >"$dir/scene.json"
 got=$("$sb" run --scene "$dir/scene.json" --json | "$py" -c 'import json,sys; print(json.load(sys.stdin)["mu_s"]["mean"])')
