@@ -92,7 +92,7 @@ expect_refused() {
   # The pattern program refuses it the same way (a mask's length is checked against its --N).
   # shellcheck disable=SC2086
   out=$("$sb" pattern $args 2>/dev/null); rc=$?
-  [ "$rc" -eq 2 ] && [ -z "$out" ] || { echo "FAIL pattern [$args]: exit $rc, printed '$out'"; fail=1; }
+  if [ "$rc" -ne 2 ] || [ -n "$out" ]; then echo "FAIL pattern [$args]: exit $rc, printed '$out'"; fail=1; fi
 }
 printf '0110\n# fine\n01z0\n' >"$dir/bad.mask"
 : >"$dir/empty.mask"
