@@ -44,8 +44,8 @@ std::vector<std::uint8_t> inline_blocks(std::string_view digits, const std::stri
   for (std::size_t i = 0; i < digits.size(); ++i) {
     const char c = digits[i];
     if (c != '0' && c != '1')
-      refuse_mask("mask character " + std::to_string(i + 1) + " of " + std::to_string(digits.size()) + " is " + shown_char(c) +
-           "; " + kAllowed);
+      refuse_mask("mask character " + std::to_string(i + 1) + " of " + std::to_string(digits.size()) + " is " +
+                  shown_char(c) + "; " + kAllowed);
     mask.push_back(c == '1' ? 1 : 0);
   }
   return mask;
@@ -75,7 +75,7 @@ class MaskFileReader {
                   ": " + shown_char(c) + " is not 0 or 1; " + kAllowed +
                   " (whitespace and lines starting with '#' are ignored)");
     mask.push_back(c == '1' ? 1 : 0);
-    check_not_too_long(mask.size(), "mask file '" + path_ + "'");
+    if (mask.size() > kMaxBlocks) check_not_too_long(mask.size(), "mask file '" + path_ + "'");
   }
 
  private:
@@ -106,23 +106,25 @@ PatternSpec parse_mask_pattern(std::string_view args, const std::string& spec) {
   out.kind = SurfaceKind::Mask;
   if (!args.empty() && args.front() == '@') {
     out.mask_path = std::string(args.substr(1));
-    if (out.mask_path.empty()) refuse_mask("'" + spec + "' names no file; write mask:@FILE, or the mask inline as mask:0110");
+    if (out.mask_path.empty())
+      refuse_mask("'" + spec + "' names no file; write mask:@FILE, or the mask inline as mask:0110");
     out.mask = read_mask_file(out.mask_path);
+    check_mask_blocks(out.mask, "mask file '" + out.mask_path + "'");
   } else {
     out.mask = inline_blocks(args, spec);
+    check_mask_blocks(out.mask);
   }
-  check_mask_blocks(out.mask);
   return out;
 }
 
-void check_mask_blocks(const std::vector<std::uint8_t>& mask) {
-  if (mask.empty()) refuse_mask(std::string("empty mask; ") + kAllowed);
-  check_not_too_long(mask.size(), "the mask");
+void check_mask_blocks(const std::vector<std::uint8_t>& mask, const std::string& what) {
+  if (mask.empty()) refuse_mask("empty mask; " + std::string(kAllowed));
+  check_not_too_long(mask.size(), what);
   if (std::any_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m > 1; }))
-    refuse_mask(std::string("a mask entry is neither 0 nor 1; ") + kAllowed);
+    refuse_mask(what + " has an entry that is neither 0 nor 1; " + kAllowed);
   if (std::find(mask.begin(), mask.end(), std::uint8_t{1}) == mask.end())
-    refuse_mask("the mask has no block in contact (no 1 among its " + std::to_string(mask.size()) +
-         " blocks); the surface cannot carry the load: a mask needs at least one 1 (pawl)");
+    refuse_mask(what + " has no block in contact (no 1 among its " + std::to_string(mask.size()) +
+                " blocks); the surface cannot carry the load: a mask needs at least one 1 (pawl)");
 }
 
 void check_mask_length(const PatternSpec& spec, int N) {
@@ -130,8 +132,8 @@ void check_mask_length(const PatternSpec& spec, int N) {
   if (blocks == static_cast<std::size_t>(N)) return;
   const std::string what = spec.mask_path.empty() ? "the mask" : "mask file '" + spec.mask_path + "'";
   refuse_mask(what + " has " + std::to_string(blocks) + " blocks but the chain has N = " + std::to_string(N) +
-       "; a mask gives one character per block, so its length must equal N (set N = " + std::to_string(blocks) +
-       ", or give a mask of " + std::to_string(N) + " blocks)");
+              "; a mask gives one character per block, so its length must equal N (set N = " +
+              std::to_string(blocks) + ", or give a mask of " + std::to_string(N) + " blocks)");
 }
 
 std::string mask_digits(const std::vector<std::uint8_t>& mask) {

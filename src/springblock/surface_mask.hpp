@@ -25,8 +25,9 @@ PatternSpec parse_mask_pattern(std::string_view args, const std::string& spec);
 std::vector<std::uint8_t> read_mask_file(const std::string& path);
 
 // What parse_mask_pattern guarantees of a mask, checked again for a spec made by hand: 1 to
-// 1000000 entries, each 0 or 1, at least one 1. Throws InputError("pattern").
-void check_mask_blocks(const std::vector<std::uint8_t>& mask);
+// 1000000 entries, each 0 or 1, at least one 1. Throws InputError("pattern"), the message
+// starting with `what`.
+void check_mask_blocks(const std::vector<std::uint8_t>& mask, const std::string& what = "the mask");
 
 // A mask lays one entry on each block, so its length must be the chain's N; the mask does not
 // set N (a scene's N is given or defaulted, never inferred). Throws InputError("pattern") naming
