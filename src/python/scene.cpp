@@ -74,6 +74,8 @@ void bind_scene(py::module_& m) {
                         "A validated scene. Fields are the command line's options with '_' (N, length, pattern,\n"
                         "mu_s, reps, seed, ...; see scene_fields()), given as keyword arguments and/or a dict,\n"
                         "with the same defaults and unit strings ('7.2cm', '10/ms'); plain numbers are SI.\n"
+                        "pattern may also be the blocks themselves: a 1-D numpy array, list or tuple of 0/1 or\n"
+                        "bool (1 = pawl), N entries, taken as the mask 'mask:0110...'.\n"
                         "Bad input raises InputError (a ValueError) naming the field and its allowed range.")
       .def(py::init(&make_scene), py::arg("fields") = py::none())
       .def("replace", [](const sb::Scene& s, const py::kwargs& kw) { return with_fields(s, kw); },
