@@ -16,12 +16,15 @@
 #include "springblock/design/report.hpp"
 #include "springblock/errors.hpp"
 #include "springblock/scene_fields.hpp"
+#include "springblock/surface_mask.hpp"
 
 namespace sb::app {
 
 struct DesignArgs {
   shell::FieldOptions fields;
   design::Query query;
+  std::vector<std::string> candidates;
+  std::string pattern;  // refused: the search chooses the surface
   std::string family = "periodic", target_mu_s, target_mu_d, target_ratio, minimise, maximise, out_path;
   bool json = false, progress = false, no_class_prune = false;
 };
@@ -32,8 +35,11 @@ namespace {
 // first slip are what the search chooses, so they are not options here.
 bool shared_field(const std::string& key) { return key != "pattern" && key != "reps" && key != "stop_after_mu_s"; }
 
-void add_space_options(CLI::App* cmd, design::DesignSpace& s, std::string& family) {
-  cmd->add_option("--family", family, "pattern family: periodic (default), hierarchical or random");
+void add_space_options(CLI::App* cmd, design::DesignSpace& s, DesignArgs& a) {
+  cmd->add_option("--family", a.family, "pattern family: periodic (default), hierarchical, random, or given (--candidates)");
+  cmd->add_option("--candidates", a.candidates,
+                  "given: the surfaces to choose among, each as --pattern takes it (e.g. mask:@a.txt mask:0110 periodic:3,1)");
+  cmd->add_option("--pattern", a.pattern, "not an option of design: it chooses the surface (see --family given)");
   cmd->add_option("--min-np", s.min_np, "periodic: smallest pawl size n_p in blocks (default 1)");
   cmd->add_option("--max-np", s.max_np, "periodic: largest pawl size n_p (default 60)");
   cmd->add_option("--min-ng", s.min_ng, "periodic/hierarchical: smallest groove size n_g or G1 (default 1)");
@@ -80,7 +86,12 @@ design::Quantity parse_quantity_name(const std::string& field, const std::string
 // The query of the command line, validated; the --out file claimed. Bad input throws first.
 design::Query build_query(const DesignArgs& a, CLI::App* cmd) {
   design::Query q = a.query;
+  if (cmd->count("--pattern") > 0)
+    throw InputError("pattern", "'" + a.pattern + "': design chooses the surface, so it takes no fixed pattern; to choose "
+                                "among surfaces of your own give --family given --candidates PATTERN... (masks too), "
+                                "to run one surface use springblock run --pattern");
   q.class_prune = !a.no_class_prune;
+  q.space.given = design::parse_candidates(a.candidates);
   a.fields.apply(q.base);
   q.base.pattern.kind = SurfaceKind::Smooth;  // validated as smooth; every candidate sets its own
   validate(q.base);
@@ -116,7 +127,7 @@ void print_table(const design::Query& q, const design::Outcome& o) {
   std::printf("%-3s %-22s %7s %-17s %-17s %s\n", "#", "pattern", "S/Stot", "mu_s", "mu_d", "meets");
   for (std::size_t i = 0; i < o.verified.size(); ++i) {
     const auto& v = o.verified[i];
-    std::printf("%-3zu %-22s %7.4f %-17s %-17s %s\n", i + 1, o.candidates.kept[v.candidate].spec.text().c_str(),
+    std::printf("%-3zu %-22s %7.4f %-17s %-17s %s\n", i + 1, pattern_label(o.candidates.kept[v.candidate].spec).c_str(),
                 o.candidates.kept[v.candidate].contact_fraction, statistic_text(v.mu_s).c_str(),
                 statistic_text(v.mu_d).c_str(), v.meets_target ? "yes" : "no");
   }
@@ -147,7 +158,7 @@ DesignCommand::DesignCommand(CLI::App& app) : args_(std::make_unique<DesignArgs>
                                       "mu_s, mu_d or ratio (successive halving, verified on fresh repetitions)");
   for (const auto& f : scene_fields())
     if (shared_field(f.key)) args_->fields.add(cmd_, f.key, f.help + " (e.g. " + f.example + ")");
-  add_space_options(cmd_, args_->query.space, args_->family);
+  add_space_options(cmd_, args_->query.space, *args_);
   add_target_options(cmd_, *args_);
   add_search_options(cmd_, args_->query);
   cmd_->add_flag("--no-class-prune", args_->no_class_prune, "mu_d target: do not prune on contact-fraction classes");

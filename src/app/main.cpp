@@ -24,6 +24,7 @@
 #include "springblock/io.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/scene_theory.hpp"
+#include "springblock/surface_mask.hpp"
 
 namespace {
 
@@ -129,7 +130,7 @@ bool nothing_measured(const sb::Scene& scene, const sb::EnsembleResult& result) 
 
 void print_run_text(const sb::Scene& scene, const sb::EnsembleResult& result) {
   std::printf("scene: N=%d L_x=%g m pattern=%s contact fraction=%.6g method=%s reps=%d seed=%llu\n",
-              scene.geometry.N, scene.geometry.L_x_m, scene.pattern.text().c_str(), result.contact_fraction,
+              scene.geometry.N, scene.geometry.L_x_m, sb::pattern_label(scene.pattern).c_str(), result.contact_fraction,
               sb::method_name(scene.run.method).c_str(), scene.reps, (unsigned long long)scene.seed);
   print_statistic("mu_s", result.mu_s, sb::not_measured(scene, result, "mu_s"));
   print_statistic("mu_d", result.mu_d, sb::not_measured(scene, result, "mu_d"));

@@ -18,7 +18,8 @@ struct PatternArgs {
 PatternCommand::PatternCommand(CLI::App& app) : args_(std::make_unique<PatternArgs>()) {
   cmd_ = app.add_subcommand("pattern", "print a surface's contact mask (1 = pawl, 0 = groove) and S/S_tot");
   cmd_->add_option("--N", args_->N, "number of blocks")->check(CLI::Range(1, 1000000));
-  cmd_->add_option("--pattern", args_->spec, "smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION");
+  cmd_->add_option("--pattern", args_->spec, "smooth | periodic:NP,NG | hierarchical:G1,G2,... | hierarchical:P1/G1,P2/G2,... | "
+                   "random:FRACTION | mask:0110... | mask:@FILE (a mask has N blocks)");
   cmd_->add_option("--layout", args_->layout,
                    "pawl_first | symmetric | groove_first | one_based (per level, comma separated)")
       ->default_str(args_->layout);

@@ -23,6 +23,11 @@ void bind_result(py::module_& m);  // result.cpp: springblock.Result, Statistic,
 void bind_run(py::module_& m);     // run.cpp: springblock.run, springblock.run_many
 void bind_theory(py::module_& m);  // theory.cpp: the submodule springblock.theory
 
+// A scene's pattern field as a scene file would hold it (pattern_value.cpp): a string as it is,
+// the blocks of a one-dimensional array, list or tuple of 0/1 or booleans as "mask:0110...".
+// Throws sb::InputError("pattern") for anything else.
+nlohmann::json pattern_value(const py::handle& value);
+
 // A JSON value as the Python object json.loads would give: the library's JSON (scenes, results)
 // reaches Python without a second serialiser.
 py::object to_python(const nlohmann::json& j);

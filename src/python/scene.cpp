@@ -8,6 +8,7 @@
 #include "springblock/errors.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/scene_fields.hpp"
+#include "springblock/surface_mask.hpp"
 
 namespace sb::python {
 namespace {
@@ -32,7 +33,8 @@ sb::Scene with_fields(sb::Scene scene, const py::dict& fields) {
   for (auto [key, value] : fields) {
     if (!py::isinstance<py::str>(key))
       throw sb::InputError(py::repr(key).cast<std::string>(), "a field name must be a string");
-    j[key.cast<std::string>()] = field_text(value);
+    const auto name = key.cast<std::string>();
+    j[name] = name == "pattern" ? pattern_value(value) : field_text(value);
   }
   sb::apply_scene_json(scene, j);
   sb::validate(scene);
@@ -53,7 +55,7 @@ sb::Scene make_scene(const py::object& fields, const py::kwargs& more) {
 std::string scene_repr(const sb::Scene& s) {
   char text[256];
   std::snprintf(text, sizeof text, "springblock.Scene(N=%d, length=%gm, pattern='%s', method='%s', reps=%d, seed=%llu)",
-                s.geometry.N, s.geometry.L_x_m, s.pattern.text().c_str(), sb::method_name(s.run.method).c_str(),
+                s.geometry.N, s.geometry.L_x_m, sb::pattern_label(s.pattern).c_str(), sb::method_name(s.run.method).c_str(),
                 s.reps, static_cast<unsigned long long>(s.seed));
   return text;
 }
@@ -72,6 +74,8 @@ void bind_scene(py::module_& m) {
                         "A validated scene. Fields are the command line's options with '_' (N, length, pattern,\n"
                         "mu_s, reps, seed, ...; see scene_fields()), given as keyword arguments and/or a dict,\n"
                         "with the same defaults and unit strings ('7.2cm', '10/ms'); plain numbers are SI.\n"
+                        "pattern may also be the blocks themselves: a 1-D numpy array, list or tuple of 0/1 or\n"
+                        "bool (1 = pawl), N entries, taken as the mask 'mask:0110...'.\n"
                         "Bad input raises InputError (a ValueError) naming the field and its allowed range.")
       .def(py::init(&make_scene), py::arg("fields") = py::none())
       .def("replace", [](const sb::Scene& s, const py::kwargs& kw) { return with_fields(s, kw); },

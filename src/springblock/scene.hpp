@@ -62,6 +62,9 @@ void to_json(nlohmann::json& j, const Scene& s);
 // modal_max_run, modal_max_groove, stepper, exact_max_run, duration), taken from its JSON `scene`
 // under the schema's names.
 nlohmann::json schema_entries(const nlohmann::json& scene);
+// A mask surface as results record it beside the pattern's text (to_json's "pattern_mask"): its
+// source, blocks, contacts, FNV-1a hash, and for a file its path (and its digits when short).
+nlohmann::json mask_record(const PatternSpec& p);
 // Overlay the keys present in `j` onto `s` (scene files). Unknown keys are an InputError.
 void apply_scene_json(Scene& s, const nlohmann::json& j);
 

@@ -57,7 +57,8 @@ std::vector<Entry> chain_and_surface_entries() {
      }},
     {{"length", "total length L_x (default 4cm; m, cm, mm, um)", "7.2cm"},
      [](Scene& s, auto& k, auto& v) { s.geometry.L_x_m = parse_quantity(v, Dimension::Length, k); }},
-    {{"pattern", "surface: smooth (default) | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION",
+    {{"pattern", "surface: smooth (default) | periodic:NP,NG | hierarchical:G1,G2,... | hierarchical:P1/G1,P2/G2,... | "
+      "random:FRACTION | mask:0110... (one 0/1 per block, N of them) | mask:@FILE",
       "periodic:2,1"},
      [](Scene& s, auto&, auto& v) {
        const auto layout = s.pattern.layout;  // a separate field: keep it whatever the order

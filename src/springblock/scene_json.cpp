@@ -1,5 +1,6 @@
 // The one place a scene is written: the JSON every results file and series header carries, and
 // the entries the results schema repeats from it. Scene files are read back here too.
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -7,8 +8,29 @@
 #include "springblock/errors.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/scene_fields.hpp"
+#include "springblock/surface_mask.hpp"
 
 namespace sb {
+namespace {
+
+// Masks up to this many blocks are recorded digit by digit even when read from a file; longer
+// ones by their counts and hash, which tie a result to its surface as surely.
+constexpr std::size_t kRecordedDigits = 10000;
+
+}  // namespace
+
+// A file's path says nothing of what the file held when the run was made; its blocks do.
+nlohmann::json mask_record(const PatternSpec& p) {
+  nlohmann::json j{{"source", p.mask_path.empty() ? "inline" : "file"},
+                   {"blocks", p.mask.size()},
+                   {"contacts", std::count(p.mask.begin(), p.mask.end(), std::uint8_t{1})},
+                   {"fnv1a64", mask_hash(p.mask)}};
+  if (!p.mask_path.empty()) {
+    j["path"] = p.mask_path;
+    if (p.mask.size() <= kRecordedDigits) j["mask"] = mask_digits(p.mask);
+  }
+  return j;
+}
 
 void to_json(nlohmann::json& j, const Scene& s) {
   j = nlohmann::json{{"material", s.material},
@@ -34,6 +56,7 @@ void to_json(nlohmann::json& j, const Scene& s) {
                      {"mu_d_skip_t0", s.rules.mu_d_skip_t0},
                      {"reps", s.reps},
                      {"seed", s.seed}};
+  if (s.pattern.kind == SurfaceKind::Mask) j["pattern_mask"] = mask_record(s.pattern);
 }
 
 nlohmann::json schema_entries(const nlohmann::json& scene) {

@@ -9,12 +9,14 @@
 #include <system_error>
 
 #include "springblock/errors.hpp"  // InputError, printed
+#include "springblock/surface_mask.hpp"
 
 namespace sb {
 namespace {
 
 constexpr const char* kGrammar =
-    "expected smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION";
+    "expected smooth | periodic:NP,NG | hierarchical:G1,G2,... | random:FRACTION | mask:0110... | mask:@FILE "
+    "(a hierarchical level may give pawl/groove sizes P/G: hierarchical:P1/G1,P2/G2,...)";
 // Sizes are block counts; anything beyond this is certainly a typo and would only produce a
 // confusing "exceeds N" later, or overflow in period arithmetic.
 constexpr int kMaxSize = 1'000'000;
@@ -135,8 +137,11 @@ void check_spec(const PatternSpec& spec) {
     case SurfaceKind::Hierarchical:
       if (spec.levels.empty() || spec.levels.size() > kMaxLevels)
         fail("hierarchical needs 1 to 8 levels, got '" + spec.text() + "'");
-      for (int g : spec.levels)
-        if (g < 1 || g > kMaxSize)
+      if (!spec.level_pawls.empty() && spec.level_pawls.size() != spec.levels.size())
+        fail("hierarchical needs one pawl size per level or none, got " + std::to_string(spec.level_pawls.size()) +
+             " pawl sizes for " + std::to_string(spec.levels.size()) + " levels");
+      for (std::size_t k = 0; k < spec.levels.size(); ++k)
+        if (spec.levels[k] < 1 || spec.levels[k] > kMaxSize || spec.pawl_size(k) < 1 || spec.pawl_size(k) > kMaxSize)
           fail("hierarchical sizes must be positive integers up to 1000000, got '" + spec.text() +
                "'");
       return;
@@ -144,6 +149,7 @@ void check_spec(const PatternSpec& spec) {
       if (!(spec.groove_fraction >= 0.0 && spec.groove_fraction < 1.0))
         fail("random groove fraction must be in [0,1), got '" + spec.text() + "'");
       return;
+    case SurfaceKind::Mask: check_mask_blocks(spec.mask); return;
   }
   fail("unknown surface kind");
 }
@@ -152,7 +158,10 @@ void check_spec(const PatternSpec& spec) {
 void check_sizes_fit(const PatternSpec& spec, int N) {
   std::vector<int> sizes;
   if (spec.kind == SurfaceKind::Periodic) sizes = {spec.n_p, spec.n_g};
-  if (spec.kind == SurfaceKind::Hierarchical) sizes = spec.levels;
+  if (spec.kind == SurfaceKind::Hierarchical) {
+    sizes = spec.levels;
+    sizes.insert(sizes.end(), spec.level_pawls.begin(), spec.level_pawls.end());
+  }
   for (int size : sizes)
     if (size > N)
       fail_plain("size " + std::to_string(size) + " in '" + spec.text() + "' exceeds the number of blocks N=" +
@@ -161,11 +170,13 @@ void check_sizes_fit(const PatternSpec& spec, int N) {
 
 // Level 1 alternates over the whole chain; each finer level subdivides every maximal pawl run
 // the levels above left. Grooves are never touched again: a finer level only removes contact.
+// Unequal pawl and groove sizes change only the period and the pawl's share of it: the layout
+// rules place them as they place a periodic surface's n_p and n_g.
 void lay_hierarchy(std::vector<std::uint8_t>& mask, const PatternSpec& spec) {
   const int N = static_cast<int>(mask.size());
-  alternate(mask, 0, N, spec.levels[0], spec.levels[0], layout_at(spec, 0));
+  alternate(mask, 0, N, spec.pawl_size(0), spec.levels[0], layout_at(spec, 0));
   for (std::size_t k = 1; k < spec.levels.size(); ++k) {
-    const int g = spec.levels[k];
+    const int p = spec.pawl_size(k), g = spec.levels[k];
     int i = 0;
     while (i < N) {
       if (!mask[i]) {
@@ -174,7 +185,7 @@ void lay_hierarchy(std::vector<std::uint8_t>& mask, const PatternSpec& spec) {
       }
       int j = i;
       while (j < N && mask[j]) ++j;
-      alternate(mask, i, j, g, g, layout_at(spec, k));
+      alternate(mask, i, j, p, g, layout_at(spec, k));
       i = j;
     }
   }
@@ -207,13 +218,17 @@ std::string PatternSpec::text() const {
     case SurfaceKind::Periodic:
       return "periodic:" + std::to_string(n_p) + "," + std::to_string(n_g);
     case SurfaceKind::Hierarchical: {
+      // A level whose pawl equals its groove is written G alone, so the P/G form of an
+      // equal-size hierarchy has the G1,G2,... form's text (and shares its runs).
       std::string s = "hierarchical:";
       for (std::size_t i = 0; i < levels.size(); ++i) {
         if (i) s += ',';
+        if (pawl_size(i) != levels[i]) s += std::to_string(pawl_size(i)) + "/";
         s += std::to_string(levels[i]);
       }
       return s;
     }
+    case SurfaceKind::Mask: return mask_path.empty() ? "mask:" + mask_digits(mask) : "mask:@" + mask_path;
     case SurfaceKind::Random: {
       // Shortest round-trip form, so parse_pattern(spec.text()) reproduces the same double and
       // therefore the same groove count; std::to_string would round to 6 decimals.
@@ -223,6 +238,10 @@ std::string PatternSpec::text() const {
     }
   }
   return "?";
+}
+
+int PatternSpec::pawl_size(std::size_t level) const {
+  return level < level_pawls.size() ? level_pawls[level] : levels.at(level);
 }
 
 std::string layout_name(Layout l) {
@@ -263,6 +282,33 @@ std::vector<Layout> parse_layout(const std::string& text) {
   return out;
 }
 
+namespace {
+
+// The levels of hierarchical:G1,G2,... or hierarchical:P1/G1,P2/G2,... (forms may be mixed).
+PatternSpec parse_hierarchical(std::string_view args, const std::string& spec) {
+  const auto toks = split(args, ',');
+  if (toks.size() > kMaxLevels)
+    fail("'hierarchical' allows at most 8 levels, got " + std::to_string(toks.size()) + " in '" + spec + "'");
+  PatternSpec out;
+  out.kind = SurfaceKind::Hierarchical;
+  // Non-decreasing levels are deliberately accepted: they are well defined (a level larger
+  // than the pawl runs it subdivides leaves them untouched) and rejecting them would forbid
+  // legitimate parameter sweeps that cross over.
+  std::vector<int> pawls;
+  for (auto t : toks) {
+    const auto parts = split(t, '/');
+    if (parts.size() > 2)
+      fail("level '" + std::string(t) + "' in '" + spec + "' must be G (pawl = groove) or P/G (pawl/groove sizes)");
+    out.levels.push_back(parse_size(parts.back(), spec));
+    pawls.push_back(parts.size() == 2 ? parse_size(parts[0], spec) : out.levels.back());
+  }
+  // Kept only when some level differs: the equal-size spec is one spec whichever form gave it.
+  if (pawls != out.levels) out.level_pawls = pawls;
+  return out;
+}
+
+}  // namespace
+
 PatternSpec parse_pattern(const std::string& spec) {
   const std::string_view s = spec;
   const auto colon = s.find(':');
@@ -290,17 +336,9 @@ PatternSpec parse_pattern(const std::string& spec) {
   }
   if (kind == "hierarchical") {
     if (!has_args) fail("'hierarchical' needs at least one groove size, got '" + spec + "'");
-    const auto toks = split(args, ',');
-    if (toks.size() > kMaxLevels)
-      fail("'hierarchical' allows at most 8 levels, got " + std::to_string(toks.size()) +
-           " in '" + spec + "'");
-    out.kind = SurfaceKind::Hierarchical;
-    // Non-decreasing levels are deliberately accepted: they are well defined (a level larger
-    // than the pawl runs it subdivides leaves them untouched) and rejecting them would forbid
-    // legitimate parameter sweeps that cross over.
-    for (auto t : toks) out.levels.push_back(parse_size(t, spec));
-    return out;
+    return parse_hierarchical(args, spec);
   }
+  if (kind == "mask") return parse_mask_pattern(args, spec);
   if (kind == "random") {
     if (!has_args || args.empty()) fail("'random' needs a groove fraction, got '" + spec + "'");
     if (args.find(',') != std::string_view::npos)
@@ -322,6 +360,7 @@ PatternSpec parse_pattern(const std::string& spec) {
 void validate_surface(const PatternSpec& spec, int N) {
   if (N < 1) fail_plain("the chain needs at least one block, got N=" + std::to_string(N) + " (allowed N >= 1)");
   check_spec(spec);
+  if (spec.kind == SurfaceKind::Mask) return check_mask_length(spec, N);
   check_sizes_fit(spec, N);
   if (spec.kind == SurfaceKind::Random) {
     // The groove count is fixed by the fraction (only which blocks is drawn), so one check holds
@@ -352,6 +391,7 @@ std::vector<std::uint8_t> contact_mask(const PatternSpec& spec, int N, std::uint
     case SurfaceKind::Periodic: alternate(mask, 0, N, spec.n_p, spec.n_g, layout_at(spec, 0)); break;
     case SurfaceKind::Hierarchical: lay_hierarchy(mask, spec); break;
     case SurfaceKind::Random: draw_grooves(mask, random_groove_count(spec, N), seed); break;
+    case SurfaceKind::Mask: mask = spec.mask; break;
   }
   return mask;
 }

@@ -1,5 +1,6 @@
 #include "springblock/trajectory_spec.hpp"
 
+#include <functional>
 #include <string>
 #include <tuple>
 
@@ -30,16 +31,21 @@ std::optional<TrajectorySpec> trajectory_spec(const Scene& s) {
 
 namespace {
 
-// Every member once, in one order, for both comparisons. The surface enters by its canonical
-// text (kind and sizes) and its layout: members of PatternSpec its kind does not use play no part.
+// A parametric surface by its canonical text (kind and sizes); a mask by its blocks alone (the
+// mask member, compared in place: no copy of a long mask per comparison), never its file's name,
+// so a file and an inline mask of the same blocks are one surface and an edited file another.
+std::string surface_text(const PatternSpec& p) { return p.kind == SurfaceKind::Mask ? "mask" : p.text(); }
+
+// Every member once, in one order, for both comparisons. The surface enters as above, with its
+// layout: members of PatternSpec its kind does not use play no part.
 auto members(const TrajectorySpec& t) {
   const auto& m = t.material;
   const auto& f = t.friction;
   return std::make_tuple(m.G_Pa, m.E_Pa, m.rho_kg_per_m3, m.P_Pa, m.gamma_per_s, m.v_m_per_s, m.l_y_m,
                          m.l_z_m, t.geometry.N, t.geometry.L_x_m, t.k_int_scale, f.mu_s_mean, f.mu_s_sd,
-                         f.mu_d_mean, f.mu_d_sd, f.pair_policy, t.pattern.text(), t.pattern.layout, t.seed,
-                         t.reps, t.method, t.dt_s, t.tol, t.modal_max_run, t.modal_max_groove, t.stepper,
-                         t.exact_max_run, t.sample_dt_s);
+                         f.mu_d_mean, f.mu_d_sd, f.pair_policy, surface_text(t.pattern), std::cref(t.pattern.mask),
+                         t.pattern.layout, t.seed, t.reps, t.method, t.dt_s, t.tol, t.modal_max_run,
+                         t.modal_max_groove, t.stepper, t.exact_max_run, t.sample_dt_s);
 }
 
 }  // namespace

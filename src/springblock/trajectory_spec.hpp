@@ -32,7 +32,7 @@ struct TrajectorySpec {
   // The micro coefficients mu_s,i and mu_d,i drawn per block, and the pair policy applied to them.
   FrictionDistribution friction;
   // Which blocks touch: the pattern and its layout rule give the mask (random ones draw it from
-  // the repetition's seed).
+  // the repetition's seed; a mask pattern holds it).
   PatternSpec pattern;
   // Repetition r draws from rep_seed(seed, r). The number of repetitions is part of the spec
   // because scenes share repetition by repetition: a group runs its leader's repetitions.

@@ -10,7 +10,8 @@ fail=0
 
 for args in "--N 120 --pattern smooth" "--N 360 --pattern periodic:10,10" \
             "--N 120 --pattern hierarchical:40,8,1" "--N 90 --pattern periodic:3,6 --layout symmetric" \
-            "--N 240 --pattern hierarchical:60,6 --layout groove_first,pawl_first"; do
+            "--N 240 --pattern hierarchical:60,6 --layout groove_first,pawl_first" \
+            "--N 24 --pattern hierarchical:6/2,2/1" "--N 6 --pattern mask:011101"; do
   # shellcheck disable=SC2086  # ARGS is a list of words on purpose
   want=$("$sb" pattern $args) || { echo "FAIL springblock pattern $args: exit $?"; fail=1; continue; }
   # shellcheck disable=SC2086
@@ -25,7 +26,8 @@ done
 # ARGS|what the message must name (the field and its allowed range or the offending value).
 err=$(mktemp)
 for case in "--N 0 --pattern smooth|--N: Value 0 not in range 1 to 1000000" \
-            "--N 10 --pattern periodic:20,5|invalid pattern" "--N 10 --pattern zigzag:1|invalid pattern"; do
+            "--N 10 --pattern periodic:20,5|invalid pattern" "--N 10 --pattern zigzag:1|invalid pattern" \
+            "--N 5 --pattern mask:011101|N = 5" "--N 4 --pattern mask:01a1|character 3 of 4"; do
   bad=${case%%|*} named=${case#*|}
   # shellcheck disable=SC2086
   out=$("$sp" pattern $bad 2>"$err"); rc=$?

@@ -16,7 +16,8 @@ namespace {
 // One list per parser, in the order of fuzz_one_input.hpp.
 const std::vector<std::string> kSeeds[4] = {
     {"smooth", "periodic:2,1", "periodic:999999,1", "hierarchical:12,4,2", "hierarchical:1,1,1,1,1,1,1,1",
-     "random:0.25", "random:0.9999999", "random:nan", "periodic:1,1,1"},
+     "random:0.25", "random:0.9999999", "random:nan", "periodic:1,1,1", "hierarchical:4/2,2/1",
+     "hierarchical:8/8,1/3", "mask:0110", "mask:1", "mask:@no_such.mask"},
     {"7.2cm", "1e-4ms", "10/ms", "5MPa", "1.2g/cm3", "0.05cm/s", " +3.5 um ", "1e308m", "1e-320s",
      "nan", "-inf", "0x1p3", "\xC2\xB5m", "\xCE\xBCs", "3 kHz", "2 s^-1"},
     {"{\"N\": 50, \"pattern\": \"periodic:2,1\"}", "{\"N\": 1000000, \"pattern\": \"hierarchical:8,4\"}",

@@ -23,6 +23,7 @@ void class_hints(const ClassPrune& c, const ClassOptions& co, std::size_t n, Sea
 
 void validate(const Query& q) {
   validate(q.space, q.base.geometry.N);
+  validate_given(q.space, q.base);
   require(q.target.any(), "target",
           "no target given; give --target-mu-s, --target-mu-d, --target-ratio, --minimise or --maximise");
   require(q.top >= 1 && q.top <= 100, "top", std::to_string(q.top) + " is outside [1, 100]");

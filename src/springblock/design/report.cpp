@@ -23,11 +23,13 @@ nlohmann::json target_json(const Target& t) {
 }
 
 nlohmann::json candidate_json(const Candidate& c) {
-  return {{"pattern", c.spec.text()},
-          {"layout", c.spec.layout_text()},
-          {"contact_fraction", json_number(c.contact_fraction)},
-          {"min_feature", c.min_feature},
-          {"same_mask_specs", c.duplicates}};
+  nlohmann::json j{{"pattern", c.spec.text()},
+                   {"layout", c.spec.layout_text()},
+                   {"contact_fraction", json_number(c.contact_fraction)},
+                   {"min_feature", c.min_feature},
+                   {"same_mask_specs", c.duplicates}};
+  if (c.spec.kind == SurfaceKind::Mask) j["pattern_mask"] = mask_record(c.spec);
+  return j;
 }
 
 nlohmann::json verified_json(const Outcome& o, const Verified& v) {
@@ -65,7 +67,10 @@ nlohmann::json search_json(const Query& q, const Outcome& o) {
                      {"stop_after_mu_s", r.stop_after_mu_s}, {"seed", r.seed}, {"wall_share_s", r.wall_s},
                      {"cpu_s", r.cpu_s}});
   const auto& c = o.candidates;
-  return {{"method", "successive halving (Karnin et al. 2013; Jamieson & Talwalkar 2016), eta = " +
+  nlohmann::json given = nlohmann::json::array();  // the given family's list, as it was given
+  for (const auto& spec : q.space.given) given.push_back(spec.text());
+  return {{"given", given},
+          {"method", "successive halving (Karnin et al. 2013; Jamieson & Talwalkar 2016), eta = " +
                          std::to_string(q.search.eta) + ", repetitions x" + std::to_string(q.search.growth) + " per rung"},
           {"family", family_name(q.space.family)},
           {"bounds", {{"min_np", q.space.min_np}, {"max_np", q.space.max_np}, {"min_ng", q.space.min_ng},

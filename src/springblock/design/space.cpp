@@ -5,6 +5,7 @@
 #include <map>
 
 #include "springblock/errors.hpp"
+#include "springblock/surface_mask.hpp"
 
 namespace sb::design {
 namespace {
@@ -56,6 +57,8 @@ std::vector<PatternSpec> specs(const DesignSpace& s) {
   } else if (s.family == Family::Hierarchical) {
     std::vector<int> prefix;
     hierarchies(s, prefix, out);
+  } else if (s.family == Family::Given) {
+    out = s.given;
   } else {
     const int steps = static_cast<int>(std::floor((s.max_fraction - s.min_fraction) / s.fraction_step + 1e-9));
     for (int k = 0; k <= steps; ++k) {
@@ -85,6 +88,7 @@ std::string family_name(Family f) {
     case Family::Periodic: return "periodic";
     case Family::Hierarchical: return "hierarchical";
     case Family::Random: return "random";
+    case Family::Given: return "given";
   }
   return "?";
 }
@@ -93,12 +97,44 @@ Family parse_family(const std::string& text) {
   if (text == "periodic") return Family::Periodic;
   if (text == "hierarchical") return Family::Hierarchical;
   if (text == "random") return Family::Random;
-  throw InputError("family", "'" + text + "' is not a family; expected periodic, hierarchical or random");
+  if (text == "given") return Family::Given;
+  throw InputError("family", "'" + text + "' is not a family; expected periodic, hierarchical, random or given");
+}
+
+std::vector<PatternSpec> parse_candidates(const std::vector<std::string>& texts) {
+  std::vector<PatternSpec> out;
+  for (const auto& t : texts) {
+    try {
+      out.push_back(parse_pattern(t));
+    } catch (const InputError& e) {
+      throw InputError("candidates", "'" + t + "' is not a surface: " + e.what());
+    }
+  }
+  return out;
+}
+
+void validate_given(const DesignSpace& s, const Scene& base) {
+  for (PatternSpec spec : s.given) {
+    spec.layout = base.pattern.layout;
+    try {
+      validate_surface(spec, base.geometry.N);
+    } catch (const InputError& e) {
+      throw InputError("candidates", pattern_label(spec) + " does not fit the chain: " + e.what());
+    }
+  }
 }
 
 void validate(const DesignSpace& s, int N) {
+  const bool given = s.family == Family::Given;
+  require(given == !s.given.empty(), "candidates",
+          given ? "--family given needs the surfaces to choose among: --candidates PATTERN... (e.g. mask:@a.txt "
+                  "periodic:3,1)"
+                : "candidates are chosen among with --family given; the " + family_name(s.family) +
+                      " family generates its own");
+  require(s.given.size() <= 100000, "candidates", std::to_string(s.given.size()) + " given; at most 100000");
   if (s.family == Family::Periodic) check_range("min_np", s.min_np, "max_np", s.max_np, N);
-  if (s.family != Family::Random) check_range("min_ng", s.min_ng, "max_ng", s.max_ng, N);
+  if (s.family == Family::Periodic || s.family == Family::Hierarchical)
+    check_range("min_ng", s.min_ng, "max_ng", s.max_ng, N);
   if (s.family == Family::Hierarchical) {
     require(s.levels >= 1 && s.levels <= 8, "levels", std::to_string(s.levels) + " is outside [1, 8]");
     require(!s.factors.empty(), "factors", "no factor given; expected integers >= 2, e.g. 2,3,4");

@@ -15,7 +15,8 @@
 
 namespace sb::design {
 
-enum class Family { Periodic, Hierarchical, Random };
+// Given: the surfaces the user lists (masks or any pattern), chosen among as a family's are.
+enum class Family { Periodic, Hierarchical, Random, Given };
 std::string family_name(Family f);
 Family parse_family(const std::string& text);  // throws InputError("family")
 
@@ -29,14 +30,23 @@ struct DesignSpace {
   std::vector<int> factors = {2, 3, 4, 5, 6, 8, 10};
   // random: groove fractions from min_fraction to max_fraction in steps of fraction_step
   double min_fraction = 0.1, max_fraction = 0.9, fraction_step = 0.05;
+  // given: the candidates as listed (each is laid out with the query's layout)
+  std::vector<PatternSpec> given;
   // constraints on every candidate
   double min_contact = 0.0, max_contact = 1.0;  // contact fraction S/S_tot
   int min_feature = 1;  // the shortest run of pawl or groove blocks in the mask (random: none)
 };
 
-// Throws InputError naming the field (min_np, max_ng, levels, factors, min_contact, ...) and its
-// allowed range when the bounds are empty or impossible on a chain of N blocks.
+// Throws InputError naming the field (min_np, max_ng, levels, factors, min_contact, candidates,
+// ...) and its allowed range when the bounds are empty or impossible on a chain of N blocks.
 void validate(const DesignSpace& space, int N);
+
+// Each given candidate must lie on the chain of `base` (its N and layout): one the user named is
+// refused, not dropped as a family's misfit would be. Throws InputError("candidates").
+void validate_given(const DesignSpace& space, const Scene& base);
+
+// The candidates of --candidates: each text parsed as a --pattern. Throws InputError("candidates").
+std::vector<PatternSpec> parse_candidates(const std::vector<std::string>& texts);
 
 struct Candidate {
   PatternSpec spec;             // with the query's layout

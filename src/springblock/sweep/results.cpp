@@ -45,9 +45,14 @@ std::string results_jsonl(const std::vector<SweepScene>& scenes, const std::map<
 
 namespace {
 
-// A varied value as a person reads it: 1e+06 rather than 1000000.0 (the JSON keeps every digit).
+// A varied value as a person reads it: 1e+06 rather than 1000000.0, and a long string (an inline
+// mask has a character per block) cut to its start and length, so a row keeps its columns (the
+// JSON keeps every digit and character).
 std::string value_text(const nlohmann::json& v) {
-  if (v.is_string()) return v.get<std::string>();
+  if (v.is_string()) {
+    const auto& s = v.get_ref<const std::string&>();
+    return s.size() <= 60 ? s : s.substr(0, 40) + "... (" + std::to_string(s.size()) + " characters)";
+  }
   if (!v.is_number_float()) return v.dump();
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v.get<double>());
