@@ -23,6 +23,12 @@ void bind_result(py::module_& m);  // result.cpp: springblock.Result, Statistic,
 void bind_run(py::module_& m);     // run.cpp: springblock.run, springblock.run_many
 void bind_theory(py::module_& m);  // theory.cpp: the submodule springblock.theory
 
+// materials.cpp: per-block fields from Python. set_materials_arrays fills the scene's columns from a
+// dict of field name -> 1-D array (numpy or list; contact may be bool), source "python arrays";
+// segments_json turns a list of dicts into the scene-file form of "segments".
+void set_materials_arrays(sb::Scene& scene, const py::dict& arrays);
+nlohmann::json segments_json(const py::handle& segments);
+
 // A JSON value as the Python object json.loads would give: the library's JSON (scenes, results)
 // reaches Python without a second serialiser.
 py::object to_python(const nlohmann::json& j);

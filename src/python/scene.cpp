@@ -29,12 +29,17 @@ nlohmann::json field_text(const py::handle& value) {
 // `base` with `fields` overlaid, validated. Throws sb::InputError naming the field.
 sb::Scene with_fields(sb::Scene scene, const py::dict& fields) {
   nlohmann::json j = nlohmann::json::object();
+  py::dict arrays;
   for (auto [key, value] : fields) {
     if (!py::isinstance<py::str>(key))
       throw sb::InputError(py::repr(key).cast<std::string>(), "a field name must be a string");
-    j[key.cast<std::string>()] = field_text(value);
+    const auto name = key.cast<std::string>();
+    if (name == "materials" && py::isinstance<py::dict>(value)) arrays = py::reinterpret_borrow<py::dict>(value);
+    else if (name == "segments") j[name] = segments_json(value);
+    else j[name] = field_text(value);
   }
   sb::apply_scene_json(scene, j);
+  if (!arrays.empty()) set_materials_arrays(scene, arrays);
   sb::validate(scene);
   return scene;
 }
