@@ -96,6 +96,7 @@ BlockMechanics block_mechanics(const ResolvedMaterials& m, const Chain& c) {
     b.K_int.push_back(i + 1 < c.N ? c.K_int * m.at(BlockField::KIntScale, i, 1.0) : 0.0);
     b.m.push_back(c.m * m.at(BlockField::MassScale, i, 1.0));
     b.m_gamma.push_back(b.m.back() * c.gamma);
+    b.inv_m.push_back(1.0 / b.m.back());
   }
   return b;
 }

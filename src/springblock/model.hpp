@@ -27,6 +27,7 @@ struct BlockMechanics {
   std::vector<double> K_int;    // spring between blocks i and i + 1 (the last entry, 0, has no spring)
   std::vector<double> m;        // mass of block i
   std::vector<double> m_gamma;  // m_i gamma
+  std::vector<double> inv_m;    // 1 / m_i: the steppers multiply, a division costs several times more
   bool uniform() const { return K_s.empty(); }
 };
 
