@@ -35,6 +35,8 @@ sb::Scene with_fields(sb::Scene scene, const py::dict& fields) {
       throw sb::InputError(py::repr(key).cast<std::string>(), "a field name must be a string");
     const auto name = key.cast<std::string>();
     if (name == "materials" && py::isinstance<py::dict>(value)) arrays = py::reinterpret_borrow<py::dict>(value);
+    else if (name == "materials" && py::hasattr(value, "__fspath__"))  // a pathlib.Path
+      j[name] = py::module_::import("os").attr("fspath")(value).cast<std::string>();
     else if (name == "segments") j[name] = segments_json(value);
     else j[name] = field_text(value);
   }

@@ -36,6 +36,16 @@ def test_bool_contact_and_rk4_mechanics():
     assert 0 < r.mu_s.mean < 2
 
 
+def test_a_file_by_path_or_pathlib(tmp_path):
+    f = tmp_path / "m.tsv"
+    f.write_text("mu_s\tmu_d\n" + "1.1\t0.5\n" * BASE["N"])
+    by_text = sb.Scene(BASE, materials=str(f)).to_dict()["materials"]
+    assert by_text == sb.Scene(BASE, materials=f).to_dict()["materials"]
+    assert by_text["source"] == str(f) and by_text["fields"] == ["mu_s", "mu_d"]
+    with pytest.raises(sb.InputError, match="cannot read materials file"):
+        sb.Scene(BASE, materials=tmp_path / "missing.tsv")
+
+
 def test_segments_as_dicts():
     s = sb.Scene(BASE, segments=[{"field": "mu_s", "from": 0, "to": 14, "value": np.float64(1.2)},
                                  {"field": "mu_d", "from": 15, "to": -1, "start": 0.4, "end": 0.6}])
