@@ -85,6 +85,16 @@ rc=$?
 { [ "$rc" -eq 2 ] && grep -qF "cannot read materials file '$dir/missing.tsv'" <<<"$err" && [ ! -e "$dir/out.json" ]; } ||
   { echo "FAIL missing file: exit $rc: $err"; fail=1; }
 
+# The closed forms and the surface search refuse what they would silently ignore or override.
+err=$("$sb" theory --N 40 --materials "$dir/defaults.tsv" 2>&1 >/dev/null)
+rc=$?
+{ [ "$rc" -eq 2 ] && grep -qF "theory gives the closed forms of a uniform chain" <<<"$err"; } ||
+  { echo "FAIL theory with materials: exit $rc: $err"; fail=1; }
+err=$("$sb" design --N 40 --materials "$dir/masked.tsv" --target-mu-s 0.7 2>&1 >/dev/null)
+rc=$?
+{ [ "$rc" -eq 2 ] && grep -qF "a contact column or segment would override every candidate's pattern" <<<"$err"; } ||
+  { echo "FAIL design with a contact column: exit $rc: $err"; fail=1; }
+
 # Segments in a scene file: a bad one names the segment; a good one runs and is recorded.
 printf '{"N": 30, "segments": [{"field": "mu_s", "from": 0, "to": 40, "value": 1.2}]}' >"$dir/seg.json"
 err=$("$sb" run --scene "$dir/seg.json" --reps 1 2>&1 >/dev/null)
