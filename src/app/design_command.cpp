@@ -95,6 +95,10 @@ design::Query build_query(const DesignArgs& a, CLI::App* cmd) {
   a.fields.apply(q.base);
   q.base.pattern.kind = SurfaceKind::Smooth;  // validated as smooth; every candidate sets its own
   validate(q.base);
+  // Per-block friction and springs may ride along; a contact field would replace every candidate.
+  require(!resolve_materials(q.base).has(BlockField::Contact), "materials",
+          "design searches the surface, and a contact column or segment would override every candidate's pattern; "
+          "leave contact out of the materials");
   q.space.family = design::parse_family(a.family);
   if (!a.target_mu_s.empty()) q.target.mu_s = design::parse_interval("target_mu_s", a.target_mu_s);
   if (!a.target_mu_d.empty()) q.target.mu_d = design::parse_interval("target_mu_d", a.target_mu_d);

@@ -182,6 +182,8 @@ int cmd_theory(const TheoryArgs& a) {
   sb::Scene scene;
   a.fields.apply(scene);
   sb::validate(scene);
+  sb::require(!scene.materials.given(), "materials",
+              "theory gives the closed forms of a uniform chain; run the scene (springblock run) for per-block fields");
   const auto p = sb::theory::predict(scene);
   if (a.json)
     std::cout << nlohmann::json(p).dump(2) << "\n";

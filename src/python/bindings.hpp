@@ -27,6 +27,11 @@ void bind_theory(py::module_& m);  // theory.cpp: the submodule springblock.theo
 // the blocks of a one-dimensional array, list or tuple of 0/1 or booleans as "mask:0110...".
 // Throws sb::InputError("pattern") for anything else.
 nlohmann::json pattern_value(const py::handle& value);
+// materials.cpp: per-block fields from Python. set_materials_arrays fills the scene's columns from a
+// dict of field name -> 1-D array (numpy or list; contact may be bool), source "python arrays";
+// segments_json turns a list of dicts into the scene-file form of "segments".
+void set_materials_arrays(sb::Scene& scene, const py::dict& arrays);
+nlohmann::json segments_json(const py::handle& segments);
 
 // A JSON value as the Python object json.loads would give: the library's JSON (scenes, results)
 // reaches Python without a second serialiser.

@@ -30,13 +30,20 @@ nlohmann::json field_text(const py::handle& value) {
 // `base` with `fields` overlaid, validated. Throws sb::InputError naming the field.
 sb::Scene with_fields(sb::Scene scene, const py::dict& fields) {
   nlohmann::json j = nlohmann::json::object();
+  py::dict arrays;
   for (auto [key, value] : fields) {
     if (!py::isinstance<py::str>(key))
       throw sb::InputError(py::repr(key).cast<std::string>(), "a field name must be a string");
     const auto name = key.cast<std::string>();
-    j[name] = name == "pattern" ? pattern_value(value) : field_text(value);
+    if (name == "materials" && py::isinstance<py::dict>(value)) arrays = py::reinterpret_borrow<py::dict>(value);
+    else if (name == "materials" && py::hasattr(value, "__fspath__"))  // a pathlib.Path
+      j[name] = py::module_::import("os").attr("fspath")(value).cast<std::string>();
+    else if (name == "segments") j[name] = segments_json(value);
+    else if (name == "pattern") j[name] = pattern_value(value);
+    else j[name] = field_text(value);
   }
   sb::apply_scene_json(scene, j);
+  if (!arrays.empty()) set_materials_arrays(scene, arrays);
   sb::validate(scene);
   return scene;
 }

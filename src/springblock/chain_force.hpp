@@ -12,6 +12,10 @@
 //                   product fewer and branch-free, so the steppers' inner loops vectorise.
 // Coupled / Damped drop the internal springs / the damping at compile time for a scene without
 // them (the kernels are specialised on the effects present).
+//
+// A chain whose blocks differ in slider spring, mass or internal springs reads them per block
+// (BlockForceCoefficients, overloads of the same two forms); a uniform chain's kernels never see
+// those arrays, so they stay what they are.
 #include "springblock/kernel_clones.hpp"
 
 namespace sb {
@@ -39,6 +43,36 @@ SB_INLINE double force_interior(const ForceCoefficients& k, int i, double x_slid
   double F = k.K_s * (x_slider - u[i]) - f;
   if constexpr (Damped) F -= k.m_gamma * v[i];
   if constexpr (Coupled) F += k.K_int * (u[i - 1] - 2.0 * u[i] + u[i + 1]);
+  return F;
+}
+
+// Per-block coefficients: K_s[i], m_gamma[i] = m_i gamma, and K_int[i] the spring between blocks
+// i and i + 1.
+struct BlockForceCoefficients {
+  int N;
+  const double* K_s;
+  const double* K_int;
+  const double* m_gamma;
+};
+
+template <bool Coupled, bool Damped>
+SB_INLINE double force_checked(const BlockForceCoefficients& k, int i, double x_slider, const double* u,
+                               const double* v, double f) {
+  double F = k.K_s[i] * (x_slider - u[i]) - f;
+  if constexpr (Damped) F -= k.m_gamma[i] * v[i];
+  if constexpr (Coupled) {
+    if (i > 0) F += k.K_int[i - 1] * (u[i - 1] - u[i]);
+    if (i + 1 < k.N) F += k.K_int[i] * (u[i + 1] - u[i]);
+  }
+  return F;
+}
+
+template <bool Coupled, bool Damped>
+SB_INLINE double force_interior(const BlockForceCoefficients& k, int i, double x_slider, const double* u,
+                                const double* v, double f) {
+  double F = k.K_s[i] * (x_slider - u[i]) - f;
+  if constexpr (Damped) F -= k.m_gamma[i] * v[i];
+  if constexpr (Coupled) F += k.K_int[i - 1] * (u[i - 1] - u[i]) + k.K_int[i] * (u[i + 1] - u[i]);
   return F;
 }
 

@@ -31,6 +31,14 @@ double Scene::t0_s() const {
   auto mask = contact_mask(pattern, geometry.N, 0);
   double fraction = pattern.kind == SurfaceKind::Random ? 1.0 - pattern.groove_fraction
                                                          : contact_fraction(mask);
+  if (materials.given()) {  // a contact column overrides the pattern
+    const auto m = resolve_materials(*this);
+    if (m.has(BlockField::Contact)) {
+      double n = 0;
+      for (double x : m.column[index_of(BlockField::Contact)]) n += x;
+      fraction = n / geometry.N;
+    }
+  }
   const double F_n = d.F_load_N / (fraction * geometry.N);
   return friction.mu_s_mean * F_n / (d.K_s_N_per_m * material.v_m_per_s);
 }
@@ -55,7 +63,14 @@ Chain build_chain(const Scene& s, int rep) {
   c.gamma = s.material.gamma_per_s;
   c.v_slider = s.material.v_m_per_s;
   const std::uint64_t seed = rep_seed(s.seed, rep);
-  c.contact = contact_mask(s.pattern, c.N, seed ^ 0x5DEECE66DULL);
+  // Per-block fields where the scene gives them (materials.hpp); a uniform scene resolves none.
+  const ResolvedMaterials mat = resolve_materials(s);
+  if (mat.has(BlockField::Contact)) {
+    c.contact.clear();
+    for (double x : mat.column[index_of(BlockField::Contact)]) c.contact.push_back(x != 0.0);
+  } else {
+    c.contact = contact_mask(s.pattern, c.N, seed ^ 0x5DEECE66DULL);
+  }
   c.n_contact = 0;
   for (auto x : c.contact) c.n_contact += x;
   c.F_load = d.F_load_N;
@@ -79,9 +94,12 @@ Chain build_chain(const Scene& s, int rep) {
   c.f_kinetic.resize(c.N);
   for (int i = 0; i < c.N; ++i) {
     // Draw for every block, groove or not, so the same seed gives the same coefficients on the
-    // shared pawl blocks of two surfaces: comparisons between patterns are paired.
-    double ms = draw(s.friction.mu_s_mean, s.friction.mu_s_sd);
-    double md = draw(s.friction.mu_d_mean, s.friction.mu_d_sd);
+    // shared pawl blocks of two surfaces: comparisons between patterns are paired. Per-block
+    // means and spreads draw from the same stream in the same order, so a materials file of the
+    // scene's own values gives the uniform scene's chain bit for bit.
+    const auto& f = s.friction;
+    double ms = draw(mat.at(BlockField::MuS, i, f.mu_s_mean), mat.at(BlockField::MuSSd, i, f.mu_s_sd));
+    double md = draw(mat.at(BlockField::MuD, i, f.mu_d_mean), mat.at(BlockField::MuDSd, i, f.mu_d_sd));
     if (s.friction.pair_policy == FrictionDistribution::PairPolicy::Clip && md > ms) md = ms;
     if (!c.contact[i]) ms = md = 0.0;
     c.mu_s[i] = ms;
@@ -94,6 +112,7 @@ Chain build_chain(const Scene& s, int rep) {
     c.f_static[i] = std::max(ms, md) * c.F_n;
     c.f_kinetic[i] = md * c.F_n;
   }
+  if (mat.mechanical()) c.blocks = block_mechanics(mat, c);
   return c;
 }
 

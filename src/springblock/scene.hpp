@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "springblock/materials.hpp"
 #include "springblock/model.hpp"
 #include "springblock/parameters.hpp"
 #include "springblock/run_control.hpp"
@@ -28,6 +29,7 @@ struct Scene {
   FrictionDistribution friction;
   double k_int_scale = 1.0;  // multiplies K_int; 0 decouples the blocks
   PatternSpec pattern;
+  BlockMaterials materials;  // per-block fields (materials.hpp); none by default
   RunControl run;
   ExtractionRules rules;
   Observables observe;

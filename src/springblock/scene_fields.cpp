@@ -92,6 +92,13 @@ std::vector<Entry> friction_entries() {
      }},
     {{"k_int_scale", "multiplies K_int (default 1; 0 decouples the blocks)", "0"},
      [](Scene& s, auto& k, auto& v) { s.k_int_scale = number(k, v); }},
+    {{"materials", "TSV file of per-block fields, one row per block, columns among contact, mu_s, mu_s_sd, mu_d, "
+                   "mu_d_sd, k_int_scale, k_s_scale, mass_scale (default none: uniform)", "examples/graded_materials.tsv"},
+     [](Scene& s, auto&, auto& v) {
+       auto segments = std::move(s.materials.segments);  // a scene file's segments lie over any file
+       s.materials = read_materials_tsv(v);
+       s.materials.segments = std::move(segments);
+     }},
   };
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "springblock/errors.hpp"
+#include "springblock/materials_json.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/scene_fields.hpp"
 #include "springblock/surface_mask.hpp"
@@ -39,6 +40,7 @@ void to_json(nlohmann::json& j, const Scene& s) {
                      {"k_int_scale", s.k_int_scale},
                      {"pattern", s.pattern.text()},
                      {"layout", s.pattern.layout_text()},
+                     {"materials", materials_json(s)},
                      {"derived", s.derived()},
                      {"method", method_name(s.run.method)},
                      {"dt_s", s.run.dt_s},
@@ -76,6 +78,7 @@ nlohmann::json schema_entries(const nlohmann::json& scene) {
 void apply_scene_json(Scene& s, const nlohmann::json& j) {
   if (!j.is_object()) throw InputError("scene", "a scene file must hold one JSON object");
   for (auto& [key, value] : j.items()) {
+    if (apply_materials_json(s, key, value)) continue;
     std::string text;
     if (value.is_string()) text = value.get<std::string>();
     else if (value.is_number_integer()) text = std::to_string(value.get<long long>());

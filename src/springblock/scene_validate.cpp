@@ -2,6 +2,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "springblock/errors.hpp"
@@ -35,14 +36,40 @@ bool rk4_damped_stable(double h, double gamma, double w2_lo, double w2_hi) {
   return true;
 }
 
+// The band [lo, hi] holding every mode's squared frequency, and the largest undamped RK4 step:
+// uniform chains by the closed forms of derive(); chains whose blocks differ by Gershgorin on
+// M^-1 K, row i in [K_s,i / m_i, (K_s,i + 2 K_int,i-1 + 2 K_int,i) / m_i].
+struct ModeBand {
+  double w2_lo, w2_hi, h_undamped;
+};
+
+ModeBand mode_band(const Scene& s) {
+  const auto d = s.derived();
+  ModeBand b{d.K_s_N_per_m / d.m_kg, d.omega_max * d.omega_max, rk4_stable_dt(d)};
+  if (!s.materials.given()) return b;
+  const auto r = resolve_materials(s);
+  if (!r.mechanical()) return b;
+  const int N = s.geometry.N;
+  b.w2_lo = std::numeric_limits<double>::infinity();
+  b.w2_hi = 0;
+  for (int i = 0; i < N; ++i) {
+    const double ks = d.K_s_N_per_m * r.at(BlockField::KsScale, i, 1.0), m = d.m_kg * r.at(BlockField::MassScale, i, 1.0);
+    const double left = i > 0 ? d.K_int_N_per_m * r.at(BlockField::KIntScale, i - 1, 1.0) : 0.0;
+    const double right = i + 1 < N ? d.K_int_N_per_m * r.at(BlockField::KIntScale, i, 1.0) : 0.0;
+    b.w2_lo = std::min(b.w2_lo, ks / m);
+    b.w2_hi = std::max(b.w2_hi, (ks + 2.0 * left + 2.0 * right) / m);
+  }
+  b.h_undamped = 2.0 * std::sqrt(2.0) / std::sqrt(b.w2_hi);
+  return b;
+}
+
 // Largest stable RK4 step with damping, by bisection below the undamped limit.
-double rk4_damped_stable_dt(const DerivedParameters& d, double gamma) {
-  const double w2_lo = d.K_s_N_per_m / d.m_kg, w2_hi = d.omega_max * d.omega_max;
-  double lo = 0, hi = rk4_stable_dt(d);
-  if (rk4_damped_stable(hi, gamma, w2_lo, w2_hi)) return hi;
+double rk4_damped_stable_dt(const ModeBand& b, double gamma) {
+  double lo = 0, hi = b.h_undamped;
+  if (rk4_damped_stable(hi, gamma, b.w2_lo, b.w2_hi)) return hi;
   for (int it = 0; it < 60; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (rk4_damped_stable(mid, gamma, w2_lo, w2_hi) ? lo : hi) = mid;
+    (rk4_damped_stable(mid, gamma, b.w2_lo, b.w2_hi) ? lo : hi) = mid;
   }
   return lo;
 }
@@ -99,13 +126,15 @@ void validate_run_control(const RunControl& r) {
 // RK4's step against the chain's stability limit, with and without damping, and the run's length.
 void validate_rk4_step(const Scene& s) {
   const auto& r = s.run;
-  const double h_max = rk4_stable_dt(s.derived());
+  const ModeBand band = mode_band(s);
+  const double h_max = band.h_undamped;
   if (r.dt_s > h_max)
     throw InputError("dt", "step " + printed(r.dt_s) + " s exceeds the RK4 stability limit of this chain; "
                            "the largest stable step is " + printed(h_max) +
-                           " s (h * omega_max <= 2 sqrt 2, omega_max = sqrt((K_s + 4 K_int)/m))");
+                           " s (h * omega_max <= 2 sqrt 2, omega_max = sqrt((K_s + 4 K_int)/m), per block "
+                           "the largest sqrt((K_s,i + 2 K_int,i-1 + 2 K_int,i)/m_i))");
   if (s.material.gamma_per_s > 0) {
-    const double h_damped = rk4_damped_stable_dt(s.derived(), s.material.gamma_per_s);
+    const double h_damped = rk4_damped_stable_dt(band, s.material.gamma_per_s);
     if (r.dt_s > h_damped)
       throw InputError("dt", "step " + printed(r.dt_s) + " s exceeds the RK4 stability limit with damping " +
                                  printed(s.material.gamma_per_s) + " /s; the largest stable step is " +
@@ -145,7 +174,8 @@ void validate_measurable(const Scene& s) {
 
 }  // namespace
 
-// In dependency order: t0 and the duration need the material, friction and surface checked.
+// In dependency order: t0 and the duration need the material, friction, surface and per-block
+// fields checked.
 void validate(const Scene& s) {
   validate_material(s.material, s.geometry);
   validate_friction(s.friction);
@@ -154,6 +184,7 @@ void validate(const Scene& s) {
   require(s.reps >= 1, "reps", s.reps, "[1, 1000000]");
   // The surface is checked here once; each repetition then builds its mask without checks.
   validate_surface(s.pattern, s.geometry.N);
+  validate_materials(s);
   validate_run_control(s.run);
   if (s.run.method == Method::RK4) validate_rk4_step(s);
   validate_measurable(s);

@@ -15,6 +15,7 @@ std::optional<TrajectorySpec> trajectory_spec(const Scene& s) {
   t.geometry = s.geometry;
   t.k_int_scale = s.k_int_scale;
   t.friction = s.friction;
+  t.materials_hash = materials_hash(resolve_materials(s));
   t.pattern = s.pattern;
   t.seed = s.seed;
   t.reps = s.reps;
@@ -43,9 +44,9 @@ auto members(const TrajectorySpec& t) {
   const auto& f = t.friction;
   return std::make_tuple(m.G_Pa, m.E_Pa, m.rho_kg_per_m3, m.P_Pa, m.gamma_per_s, m.v_m_per_s, m.l_y_m,
                          m.l_z_m, t.geometry.N, t.geometry.L_x_m, t.k_int_scale, f.mu_s_mean, f.mu_s_sd,
-                         f.mu_d_mean, f.mu_d_sd, f.pair_policy, surface_text(t.pattern), std::cref(t.pattern.mask),
-                         t.pattern.layout, t.seed, t.reps, t.method, t.dt_s, t.tol, t.modal_max_run,
-                         t.modal_max_groove, t.stepper, t.exact_max_run, t.sample_dt_s);
+                         f.mu_d_mean, f.mu_d_sd, f.pair_policy, t.materials_hash, surface_text(t.pattern),
+                         std::cref(t.pattern.mask), t.pattern.layout, t.seed, t.reps, t.method, t.dt_s, t.tol,
+                         t.modal_max_run, t.modal_max_groove, t.stepper, t.exact_max_run, t.sample_dt_s);
 }
 
 }  // namespace

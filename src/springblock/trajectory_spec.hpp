@@ -15,6 +15,7 @@
 // its length is not the scene's to state, and it has no spec (it is never shared).
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "springblock/parameters.hpp"
 #include "springblock/run_control.hpp"
@@ -31,6 +32,8 @@ struct TrajectorySpec {
   double k_int_scale = 1.0;
   // The micro coefficients mu_s,i and mu_d,i drawn per block, and the pair policy applied to them.
   FrictionDistribution friction;
+  // The per-block fields (contact, friction, springs, masses) by the hash of their values.
+  std::string materials_hash;
   // Which blocks touch: the pattern and its layout rule give the mask (random ones draw it from
   // the repetition's seed; a mask pattern holds it).
   PatternSpec pattern;

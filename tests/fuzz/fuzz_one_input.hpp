@@ -7,6 +7,7 @@
 //   1: parse_quantity for the dimension picked by the second byte
 //   2: a JSON scene file: apply_scene_json, then validate
 //   3: set_scene_field for the key picked by the second byte, then validate
+//   4: a materials TSV file: parse_materials_tsv, then validate on a chain of 1 to 4 blocks
 // The contract under test: user text is either accepted or refused with sb::InputError. Any
 // other exception escapes to the caller (the harness turns it into a crash report).
 #include <cstddef>
@@ -24,7 +25,7 @@ namespace sbfuzz {
 // Returns true if the input was accepted, false if refused with InputError.
 inline bool parse_one(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return false;
-  const int which = data[0] % 4;
+  const int which = data[0] % 5;
   const std::uint8_t pick = data[1];
   const std::string text(reinterpret_cast<const char*>(data + 2), size - 2);
   try {
@@ -46,6 +47,15 @@ inline bool parse_one(const std::uint8_t* data, std::size_t size) {
         sb::Scene s;
         sb::apply_scene_json(s, j);
         sb::validate(s);
+        return true;
+      }
+      case 4: {
+        sb::Scene s;
+        s.geometry.N = 1 + pick % 4;
+        s.run.method = pick & 4 ? sb::Method::RK4 : sb::Method::Event;
+        s.materials = sb::parse_materials_tsv(text, "fuzz.tsv");
+        sb::validate(s);
+        (void)sb::build_chain(s, 0);
         return true;
       }
       default: {

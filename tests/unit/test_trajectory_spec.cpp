@@ -24,6 +24,8 @@ const Verdict kVerdicts[] = {
     {"N", "360", true},
     {"length", "7.2cm", true},
     {"k_int_scale", "0.5", true},
+    // Per-block fields, by the hash of their values.
+    {"materials", SPRINGBLOCK_SOURCE_DIR "/examples/graded_materials.tsv", true},
     {"damping", "5/ms", true},
     {"velocity", "0.1cm/s", true},
     {"pressure", "2MPa", true},

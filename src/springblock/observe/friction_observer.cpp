@@ -90,7 +90,12 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
   // (friction_sums; the order of the additions is a choice of round-off, paper/choices.md).
   double* f = f_contact_.data();
   int n_sliding = 0;
+  const bool per_block = !c.blocks.uniform();  // each block's own springs: Chain::driving_force
   for (const auto& [lo, hi] : contact_runs_) {
+    if (per_block) {
+      for (int i = lo; i < hi; ++i) f[i] = c.driving_force(i, u, s.v.data(), s.t), n_sliding += dir[i] != 0;
+      continue;
+    }
     const int first = std::max(lo, 1), last = std::min(hi, c.N - 1);
     if (first < last) stuck_forces(k, first, last, c.v_slider * s.t, u, f);
     // A chain end's force by the checked form; a one-block run at an end is taken once.

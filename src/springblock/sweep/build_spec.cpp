@@ -1,4 +1,4 @@
-// The sections of a sweep file, checked: scene entries hold scalars, axes hold non-empty lists
+// The sections of a sweep file, checked: scene entries hold scalars (or the list of segments), axes hold non-empty lists
 // of scalars or a range, and nothing else is at the top level. Whether a value suits its field
 // is the scene's business (expand.cpp applies it through the scene-file table).
 #include "springblock/errors.hpp"
@@ -18,7 +18,8 @@ std::vector<Field> scene_entries(const Tree& t, const nlohmann::ordered_json& ob
   std::vector<Field> out;
   for (auto& [key, value] : obj.items()) {
     const int line = t.line(pointer + "/" + key);
-    if (!scalar(value))
+    // The one list a scene holds: its per-block segments and ramps (materials_json.hpp).
+    if (!scalar(value) && !(key == "segments" && value.is_array()))
       throw InputError(key, "must be a string, number or boolean (" + where(path, line) +
                                 "); lists and ranges belong in [axes]");
     out.push_back({key, plain(value), line});

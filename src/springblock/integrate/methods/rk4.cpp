@@ -46,7 +46,18 @@ SB_INLINE void rk4_stage(int N, const double* __restrict u, const double* __rest
   }
 }
 
-template <bool Coupled, bool Damped>
+// The accelerations of the whole chain: the uniform chain's kernel, or (PerBlock) the one that
+// reads each block's springs and mass.
+template <bool Coupled, bool Damped, bool PerBlock>
+SB_INLINE void chain_accel(const Chain& c, const double* __restrict u, const double* __restrict v, double t,
+                           const Workspace& w, double* __restrict a) {
+  if constexpr (PerBlock)
+    event_detail::chain_accel_per_block<Coupled, Damped>(c, 0, c.N, u, v, t, w.mobile.data(), w.f_kin.data(), a);
+  else
+    event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, u, v, t, w.mobile.data(), w.f_kin.data(), a);
+}
+
+template <bool Coupled, bool Damped, bool PerBlock>
 SB_KERNEL_CLONES void rk4_step(const Chain& c, State& s, Workspace& w, double t, double h) {
   const int N = c.N;
   double* u = s.u.data();
@@ -57,17 +68,17 @@ SB_KERNEL_CLONES void rk4_step(const Chain& c, State& s, Workspace& w, double t,
   double* su = w.su.data();
   double* sv = w.sv.data();
   const double h2 = 0.5 * h, h6 = h / 6.0;
-  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, u, v, t, w.mobile.data(), w.f_kin.data(), a);
+  chain_accel<Coupled, Damped, PerBlock>(c, u, v, t, w, a);
   // Stage 1 starts the accumulators: su = k1_u = v, sv = k1_v = a.
   std::copy(v, v + N, su);
   std::copy(a, a + N, sv);
   for (int i = 0; i < N; ++i) us[i] = u[i] + h2 * v[i];
   for (int i = 0; i < N; ++i) vs[i] = v[i] + h2 * a[i];
-  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, us, vs, t + h2, w.mobile.data(), w.f_kin.data(), a);
+  chain_accel<Coupled, Damped, PerBlock>(c, us, vs, t + h2, w, a);
   rk4_stage(N, u, v, a, h2, us, vs, su, sv);
-  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, us, vs, t + h2, w.mobile.data(), w.f_kin.data(), a);
+  chain_accel<Coupled, Damped, PerBlock>(c, us, vs, t + h2, w, a);
   rk4_stage(N, u, v, a, h, us, vs, su, sv);
-  event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, us, vs, t + h, w.mobile.data(), w.f_kin.data(), a);
+  chain_accel<Coupled, Damped, PerBlock>(c, us, vs, t + h, w, a);
   for (int i = 0; i < N; ++i) {
     u[i] += h6 * (su[i] + vs[i]);
     v[i] += h6 * (sv[i] + a[i]);
@@ -80,8 +91,9 @@ SB_KERNEL_CLONES void rk4_step(const Chain& c, State& s, Workspace& w, double t,
 // whose spring force, computed here without the (zero) damping term and in another order,
 // reaches its threshold lowered by a relative 1e-9 (far above the rounding of either sum). Only
 // then do the exact rules run, so every decision is theirs; the screen skips only steps on
-// which they would change nothing.
-SB_KERNEL_CLONES bool switch_screen(const ForceCoefficients& k, double slider, const double* __restrict u,
+// which they would change nothing. Coefficients: the uniform chain's or per block.
+template <class Coefficients>
+SB_KERNEL_CLONES bool switch_screen(const Coefficients& k, double slider, const double* __restrict u,
                    const double* __restrict v, const double* __restrict slide_dir,
                    const double* __restrict f_screen, const double* __restrict stop_bias) {
   const int N = k.N;
@@ -145,9 +157,15 @@ int apply_switches(const Chain& c, State& s, Workspace& w) {
 
 // apply_switches behind the screen (unless `screen` is off, the tests' reference); `n_sliding`
 // is the count after the previous call.
+template <bool PerBlock>
 int apply_switches_screened(const Chain& c, State& s, Workspace& w, int n_sliding, bool screen) {
-  const bool maybe = !screen || switch_screen(c.force_coefficients(), c.v_slider * s.t, s.u.data(), s.v.data(),
-                                              w.screen.slide_dir.data(), w.screen.f_screen.data(), w.screen.stop_bias.data());
+  auto screened = [&](const auto& k) {
+    return switch_screen(k, c.v_slider * s.t, s.u.data(), s.v.data(), w.screen.slide_dir.data(),
+                         w.screen.f_screen.data(), w.screen.stop_bias.data());
+  };
+  bool maybe = !screen;
+  if constexpr (PerBlock) maybe = maybe || screened(c.block_force_coefficients());
+  else maybe = maybe || screened(c.force_coefficients());
   return maybe ? apply_switches(c, s, w) : n_sliding;
 }
 
@@ -159,13 +177,14 @@ std::int64_t quiet_steps(const Chain& c, const State& s, std::int64_t n, double 
   double k_min = static_cast<double>(n_end - n);
   for (int i = 0; i < c.N; ++i) {
     const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
-    k_min = std::min(k_min, std::floor((c.f_static[i] - F) / rate));
+    const double rate_i = c.blocks.uniform() ? rate : c.blocks.K_s[i] * c.v_slider * h;
+    k_min = std::min(k_min, std::floor((c.f_static[i] - F) / rate_i));
   }
   // Two steps of margin absorb rounding in the closed form; the remaining steps run normally.
   return std::max<std::int64_t>(1, static_cast<std::int64_t>(k_min) - 2);
 }
 
-template <bool Coupled, bool Damped>
+template <bool Coupled, bool Damped, bool PerBlock>
 void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, double h, bool screen) {
   Workspace w(c.N);
   for (int i = 0; i < c.N; ++i) {
@@ -213,7 +232,7 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     }
     {
       WorkTimer timer(s.work, s.work.stepping_s);
-      rk4_step<Coupled, Damped>(c, s, w, n * h, h);
+      rk4_step<Coupled, Damped, PerBlock>(c, s, w, n * h, h);
     }
     ++n;
     s.t = n * h;
@@ -221,21 +240,27 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
     s.rhs_evals += 4;
     {
       WorkTimer timer(s.work, s.work.switching_s);
-      n_sliding = apply_switches_screened(c, s, w, n_sliding, screen);
+      n_sliding = apply_switches_screened<PerBlock>(c, s, w, n_sliding, screen);
     }
     tell_switched();
     if (n % stride == 0) sample();
   }
 }
 
+template <bool PerBlock>
+void run_chain(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, double h, bool screen) {
+  const auto e = c.effects();
+  if (e.coupled && e.damped) run_loop<true, true, PerBlock>(c, s, t_end, sample_dt, obs, h, screen);
+  else if (e.coupled) run_loop<true, false, PerBlock>(c, s, t_end, sample_dt, obs, h, screen);
+  else if (e.damped) run_loop<false, true, PerBlock>(c, s, t_end, sample_dt, obs, h, screen);
+  else run_loop<false, false, PerBlock>(c, s, t_end, sample_dt, obs, h, screen);
+}
+
 }  // namespace
 
 void Rk4::run(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs) {
-  const auto e = c.effects();
-  if (e.coupled && e.damped) run_loop<true, true>(c, s, t_end, sample_dt, obs, h_, screen_);
-  else if (e.coupled) run_loop<true, false>(c, s, t_end, sample_dt, obs, h_, screen_);
-  else if (e.damped) run_loop<false, true>(c, s, t_end, sample_dt, obs, h_, screen_);
-  else run_loop<false, false>(c, s, t_end, sample_dt, obs, h_, screen_);
+  if (c.blocks.uniform()) run_chain<false>(c, s, t_end, sample_dt, obs, h_, screen_);
+  else run_chain<true>(c, s, t_end, sample_dt, obs, h_, screen_);
 }
 
 }  // namespace sb

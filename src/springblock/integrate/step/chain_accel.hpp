@@ -27,4 +27,22 @@ SB_INLINE void chain_accel(const Chain& c, int lo, int hi, const double* __restr
   for (int i = first; i < last; ++i) a[i] = mobile[i] * inv_m * force_interior<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
 }
 
+// The same for a chain whose blocks differ in slider spring, mass or internal springs (RK4 only):
+// each block's force over its own mass.
+template <bool Coupled, bool Damped>
+SB_INLINE void chain_accel_per_block(const Chain& c, int lo, int hi, const double* __restrict u,
+                                     const double* __restrict v, double t, const double* __restrict mobile,
+                                     const double* __restrict f_kin, double* __restrict a) {
+  const int N = c.N;
+  const BlockForceCoefficients k = c.block_force_coefficients();
+  const double* __restrict inv_m = c.blocks.inv_m.data();
+  const double slider = c.v_slider * t;
+  auto one = [&](int i) { a[i] = mobile[i] * inv_m[i] * force_checked<Coupled, Damped>(k, i, slider, u, v, f_kin[i]); };
+  int first = lo, last = hi;
+  if (first == 0 && first < last) one(first++);
+  if (last == N && first < last) one(--last);
+  for (int i = first; i < last; ++i)
+    a[i] = mobile[i] * inv_m[i] * force_interior<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
+}
+
 }  // namespace sb::event_detail
