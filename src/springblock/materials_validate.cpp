@@ -114,10 +114,6 @@ void validate_materials(const Scene& s) {
               block_where(m, r, i) + ": mu_d mean " + printed(md) + " exceeds the mu_s mean " + printed(ms) +
                   "; the allowed range is [0, mu_s] (kinetic friction above static friction has no stick-slip)");
     }
-  require(!r.mechanical() || s.run.method == Method::RK4, "materials",
-          r.source + ": per-block k_int_scale, k_s_scale or mass_scale other than 1 are taken by --method rk4 only "
-                     "(the event method and its K_int = 0 solver take per-block friction and contact, and uniform "
-                     "springs and masses)");
 }
 
 }  // namespace sb

@@ -44,6 +44,14 @@ struct Chain {
   BlockMechanics blocks;  // per-block springs and masses; empty when the chain is uniform
 
   Effects effects() const { return {K_int > 0, gamma > 0, n_contact < N}; }
+  bool uniform() const { return blocks.uniform(); }
+  // Block i's slider spring and mass, and the spring between blocks i and i + 1: the chain's own
+  // values on a uniform chain (the same doubles), the block's where they differ.
+  double k_s(int i) const { return blocks.uniform() ? K_s : blocks.K_s[i]; }
+  double mass(int i) const { return blocks.uniform() ? m : blocks.m[i]; }
+  double spring(int i) const { return blocks.uniform() ? K_int : blocks.K_int[i]; }
+  // The spring between neighbours i and j = i +- 1.
+  double spring_between(int i, int j) const { return spring(i < j ? i : j); }
   // sqrt((K_s + 4 K_int) / m): every run's modes are slower (its stiffness matrix's rows sum to
   // at most K_s + 4 K_int by Gershgorin). The steppers' and searches' time scale. Per block, the
   // largest sqrt((K_s,i + 2 K_int,i-1 + 2 K_int,i) / m_i), by Gershgorin on M^-1 K.

@@ -78,7 +78,6 @@ expect_error 'k_s_scale\n1\n0\n1\n' "column k_s_scale: value 0 is outside the al
 expect_error 'contact\n0\n0\n0\n' "no block in contact"
 expect_error 'contact\n0\n0.5\n1\n' "column contact: value 0.5 is outside the allowed range 0 or 1"
 expect_error 'mu_s\tmu_d\n1\t0.5\n0.4\t0.5\n1\t0.5\n' "mu_d mean 0.5 exceeds the mu_s mean 0.4"
-expect_error 'mass_scale\n1\n2\n1\n' "taken by --method rk4 only"
 rm -f "$dir/out.json"
 err=$("$sb" run --N 3 --materials "$dir/missing.tsv" --out "$dir/out.json" 2>&1 >/dev/null)
 rc=$?

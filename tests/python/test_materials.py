@@ -59,7 +59,6 @@ def test_segments_as_dicts():
     ({"materials": {"mu_s_sd": np.full(30, -0.1)}}, "python arrays, block 0, column mu_s_sd: value -0.1"),
     ({"materials": {"mu_s": np.full(30, np.nan)}}, "column mu_s: value nan is outside"),
     ({"materials": {"grip": np.ones(30)}}, "unknown field 'grip'"),
-    ({"materials": {"k_s_scale": np.full(30, 2.0)}}, "taken by --method rk4 only"),
     ({"materials": {"mu_s": np.ones((30, 2))}}, "must be a 1-D array"),
     ({"segments": [{"field": "mu_s", "from": 0, "to": 30, "value": 1.0}]}, "segments.0 (mu_s): blocks from = 0 to = 30"),
 ])

@@ -1,7 +1,7 @@
 #pragma once
 // What an integrator knows exactly of the contact blocks' friction forces while every contact
 // block is stuck (a quiet phase of the event method): each force is affine in tau = t - t0 plus,
-// for a block beside grooves, K_int times the ringing of the groove rows next to it. The ringing
+// for a block beside grooves, the spring to each groove row next to it times that row's ringing. The ringing
 // is a sum of damped modes, whose values at equally spaced samples the integrator can add up and
 // bound without visiting each sample. An observer turns this into whatever it reads (sum |f|,
 // sum f, a block's own force), so no integrator computes an observable.
@@ -13,11 +13,13 @@
 
 namespace sb {
 
-// A contact block beside grooves: its force is fa + fb tau + K_int (sum of its n ringing terms).
+// A contact block beside grooves: its force is fa + fb tau + sum over its n ringing terms of
+// k[r] times term[r] (k: the spring to that groove block).
 struct EdgeForce {
   double fa = 0, fb = 0;
   int n = 0;
   int term[2] = {-1, -1};
+  double k[2] = {0, 0};
 };
 
 class RingingForces {
@@ -25,7 +27,6 @@ class RingingForces {
   virtual ~RingingForces() = default;
 
   virtual double t0() const = 0;
-  virtual double K_int() const = 0;
   // Changes whenever the description below does (a new quiet phase).
   virtual long phase() const = 0;
   // The contact blocks beside no groove: forces a + slope tau, a at tau = 0, one common slope.

@@ -33,7 +33,7 @@ void RingingSums::prepare() {
   const std::vector<double>& a = f_.interior();
   interior_.reset(a.data(), static_cast<int>(a.size()), f_.interior_slope());
   interior_of_ = phase;
-  t0_ = f_.t0(), K_int_ = f_.K_int();
+  t0_ = f_.t0();
   edges_ = &f_.edges();
 }
 
@@ -44,7 +44,7 @@ void RingingSums::at(double t, double& sum_abs, double& sum_signed) {
   f_.terms_now(tau, terms_.data());
   for (const EdgeForce& e : *edges_) {
     double f = e.fa + e.fb * tau;
-    for (int r = 0; r < e.n; ++r) f += K_int_ * terms_[e.term[r]];
+    for (int r = 0; r < e.n; ++r) f += e.k[r] * terms_[e.term[r]];
     sum_abs += std::fabs(f);
     sum_signed += f;
   }
@@ -75,7 +75,7 @@ bool RingingSums::keeps_signs(double tau0, double tau_last, bool need_sums) {
 
 double RingingSums::edge_reach(const EdgeForce& e) const {
   double reach = 0;
-  for (int r = 0; r < e.n; ++r) reach += K_int_ * bound_[e.term[r]];
+  for (int r = 0; r < e.n; ++r) reach += e.k[r] * bound_[e.term[r]];
   return reach;
 }
 
@@ -115,12 +115,11 @@ bool RingingSums::window(long k0, double dt, long n, double& sum_abs, double& su
   }
   sum_abs = interior_abs, sum_signed = interior_signed;
   const std::vector<EdgeForce>& edges = *edges_;
-  const double K_int = K_int_;
   for (std::size_t k = 0; k < edges.size(); ++k) {
     if (unsure_[k]) continue;
     const EdgeForce& e = edges[k];
     double f = e.fa * mm + e.fb * st;
-    for (int r = 0; r < e.n; ++r) f += K_int * terms_[e.term[r]];
+    for (int r = 0; r < e.n; ++r) f += e.k[r] * terms_[e.term[r]];
     sum_abs += e.fa + e.fb * tau0 >= 0 ? f : -f;  // every sample's sign (checked above)
     sum_signed += f;
   }
@@ -144,14 +143,13 @@ void RingingSums::unsure_sums(long k0, double dt, long n, double& sum_abs, doubl
   const std::size_t nn = static_cast<std::size_t>(n);
   values_.assign(2 * nn * static_cast<std::size_t>(slots), 0.0);
   f_.series(k0, dt, n, slot_.data(), values_.data());
-  const double K_int = K_int_;
   for (std::size_t k = 0; k < edges.size(); ++k) {
     if (!unsure_[k]) continue;
     const EdgeForce& e = edges[k];
     for (long j = 0; j < n; ++j) {
       double f = e.fa + e.fb * tau_of(k0 + j);
       for (int r = 0; r < e.n; ++r)
-        f += K_int * values_[2 * nn * static_cast<std::size_t>(slot_[e.term[r] / 2]) +
+        f += e.k[r] * values_[2 * nn * static_cast<std::size_t>(slot_[e.term[r] / 2]) +
                              (e.term[r] % 2 == 0 ? 0 : nn) + static_cast<std::size_t>(j)];
       sum_abs += std::fabs(f);
       sum_signed += f;

@@ -38,7 +38,7 @@ class RingingSums {
   bool envelope(long k0, double dt, long n, Envelope& env);
 
  private:
-  // The interior forces' sums, t0, K_int and the edges of the forces' current phase.
+  // The interior forces' sums, t0 and the edges of the forces' current phase.
   void prepare();
   // window's and envelope's test, and an edge's reach.
   bool keeps_signs(double tau0, double tau_last, bool need_sums);
@@ -49,7 +49,7 @@ class RingingSums {
   RingingForces& f_;
   CommonSlopeSum interior_;         // the contact blocks with no groove neighbour
   long interior_of_ = -1;           // the phase interior_ holds (RingingForces::phase)
-  double t0_ = 0, K_int_ = 0;
+  double t0_ = 0;
   const std::vector<EdgeForce>* edges_ = nullptr;
   std::vector<double> terms_;       // per term: its value (at) or its sum (window)
   std::vector<double> bound_;       // per term: bound on it from a stretch's first sample on

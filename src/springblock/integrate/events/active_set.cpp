@@ -47,7 +47,7 @@ ActiveSet::ActiveSet(const Chain& c, RunStore& store, bool settle_grooves, doubl
 bool ActiveSet::settled_now(const State& s, BlockRange r) const {
   if (!rules_.settle_grooves) return false;
   const RunShape& sh = store_.shapes().of(r);
-  const double uL = sh.left ? s.u[r.lo - 1] : 0.0, uR = sh.right ? s.u[r.hi] : 0.0;
+  const double uL = sh.path.left ? s.u[r.lo - 1] : 0.0, uR = sh.path.right ? s.u[r.hi] : 0.0;
   for (int k = 0; k < r.size(); ++k) {
     const int i = r.lo + k;
     const double A = sh.path.A(k, uL, uR);

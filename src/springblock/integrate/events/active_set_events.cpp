@@ -99,7 +99,7 @@ void ActiveSet::recheck(const Chain& c, const State& s) {
 }
 
 void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
-  double a = c.K_s * (c.v_slider * s.t - s.u[i]), b = c.K_s * c.v_slider;
+  double a = c.k_s(i) * (c.v_slider * s.t - s.u[i]), b = c.k_s(i) * c.v_slider;
   if (rules_.K_int > 0) {
     for (int j : {i - 1, i + 1}) {
       if (j < 0 || j >= N()) continue;
@@ -107,11 +107,12 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
         events_.set(i, kInf, false);
         return;
       }
+      const double k_ij = c.spring_between(i, j);
       if (kind_[j] == kSettled) {
-        a += rules_.K_int * (settled_u(j, s.t) - s.u[i]);
-        b += rules_.K_int * store_.B(j);
+        a += k_ij * (settled_u(j, s.t) - s.u[i]);
+        b += k_ij * store_.B(j);
       } else {
-        a += rules_.K_int * (s.u[j] - s.u[i]);
+        a += k_ij * (s.u[j] - s.u[i]);
       }
     }
   }

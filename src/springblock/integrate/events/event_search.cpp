@@ -34,9 +34,9 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
   auto g = [&](int i, double th) {
     if (s.dir[i] != 0) return s.dir[i] * (th == 1.0 ? v1[i] : dp.dense_v(i, th));
     // Stuck: v_i = 0 (no damping force) and u_i does not move.
-    double F = c.K_s * (c.v_slider * (t + th * h) - s.u[i]);
-    if (i > 0) F += c.K_int * (nb_u(i - 1, th) - s.u[i]);
-    if (i + 1 < N) F += c.K_int * (nb_u(i + 1, th) - s.u[i]);
+    double F = c.k_s(i) * (c.v_slider * (t + th * h) - s.u[i]);
+    if (i > 0) F += c.spring(i - 1) * (nb_u(i - 1, th) - s.u[i]);
+    if (i + 1 < N) F += c.spring(i) * (nb_u(i + 1, th) - s.u[i]);
     return c.f_static[i] - std::fabs(F);
   };
   // A stuck block beside a modal run: if |F| stays below f_static with that run's end anywhere
@@ -44,13 +44,14 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
   // event and the modes (an exp and a sincos each) need not be evaluated. The margin covers the
   // round-off of the direct evaluation, so the outcome is the screen's to the last bit.
   auto surely_no_event = [&](int i, double th) {
-    double F = c.K_s * (c.v_slider * (t + th * h) - s.u[i]), spread = 0, scale = std::fabs(F);
+    double F = c.k_s(i) * (c.v_slider * (t + th * h) - s.u[i]), spread = 0, scale = std::fabs(F);
     for (int j : {i - 1, i + 1}) {
       if (j < 0 || j >= N) continue;
       const bool modal = active.kind(j) == ActiveSet::kModal;
-      const double d = c.K_int * ((modal ? active.modal_affine_u(j, t + th * h) : nb_u(j, th)) - s.u[i]);
+      const double k_ij = c.spring_between(i, j);
+      const double d = k_ij * ((modal ? active.modal_affine_u(j, t + th * h) : nb_u(j, th)) - s.u[i]);
       F += d, scale += std::fabs(d);
-      if (modal) spread += c.K_int * active.modal_amplitude(j);
+      if (modal) spread += k_ij * active.modal_amplitude(j);
     }
     return std::fabs(F) + spread + 1e-12 * (scale + spread) < c.f_static[i] * (1.0 - 1e-9);
   };

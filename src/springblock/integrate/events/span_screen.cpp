@@ -45,7 +45,7 @@ bool hermite_positive(double g0, double d0, double g1, double d1, double h, doub
 }  // namespace
 
 SpanScreen::SpanScreen(const Chain& c)
-    : K_int_(c.K_int), K_s_(c.K_s), v_(c.v_slider), eps_v_(kStopMargin * c.v_slider) {}
+    : v_(c.v_slider), eps_v_(kStopMargin * c.v_slider) {}
 
 void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active) {
   fns_.clear();
@@ -63,8 +63,10 @@ void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans,
     Fn f{j, 0, {side_of(j - 1), side_of(j + 1)}, {}, {}, 0, 0, 0};
     for (int side = 0; side < 2; ++side) {
       const int nb = side == 0 ? j - 1 : j + 1;
-      if (f.side[side] == kSpan) f.M2 += K_int_ * spans.row_bound(nb, 2), f.M4 += K_int_ * spans.row_bound(nb, 4);
-      if (f.side[side] == kModal) f.spread += K_int_ * active.modal_amplitude(nb);
+      if (f.side[side] == kNone) continue;
+      const double k = c.spring_between(j, nb);
+      if (f.side[side] == kSpan) f.M2 += k * spans.row_bound(nb, 2), f.M4 += k * spans.row_bound(nb, 4);
+      if (f.side[side] == kModal) f.spread += k * active.modal_amplitude(nb);
     }
     f.start.g = cheap(c, s, spans, active, f, s.t, false);
     fns_.push_back(f);
@@ -91,24 +93,27 @@ double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans,
     return f.dir * (slope ? spans.a(j, end) : (fresh_at_start(j) ? s.v[j] : spans.v(j, end)) + eps_v_ * f.dir);
   // The driving force as the Dormand-Prince search sums it (event_search.cpp), and its slope.
   const double uj = s.u[j];
-  double F = K_s_ * (v_ * t - uj), dF = K_s_ * v_;
+  const double k_s = c.k_s(j);
+  double F = k_s * (v_ * t - uj), dF = k_s * v_;
   for (int side = 0; side < 2; ++side) {
     const int nb = side == 0 ? j - 1 : j + 1;
+    if (f.side[side] == kNone) continue;
+    const double k = c.spring_between(j, nb);
     switch (f.side[side]) {
       case kNone: continue;
       case kSpan:
-        F += K_int_ * ((fresh_at_start(nb) ? s.u[nb] : spans.u(nb, end)) - uj);
-        if (slope) dF += K_int_ * (fresh_at_start(nb) ? s.v[nb] : spans.v(nb, end));
+        F += k * ((fresh_at_start(nb) ? s.u[nb] : spans.u(nb, end)) - uj);
+        if (slope) dF += k * (fresh_at_start(nb) ? s.v[nb] : spans.v(nb, end));
         break;
       case kSettled:
-        F += K_int_ * (active.settled_u(nb, t) - uj);
-        dF += K_int_ * active.settled_drift(nb);
+        F += k * (active.settled_u(nb, t) - uj);
+        dF += k * active.settled_drift(nb);
         break;
       case kModal:
-        F += K_int_ * (active.modal_affine_u(nb, t) - uj);
-        dF += K_int_ * active.modal_affine_slope(nb);
+        F += k * (active.modal_affine_u(nb, t) - uj);
+        dF += k * active.modal_affine_slope(nb);
         break;
-      case kFixed: F += K_int_ * (s.u[nb] - uj); break;
+      case kFixed: F += k * (s.u[nb] - uj); break;
     }
   }
   if (slope) return F >= 0 ? -dF : dF;
@@ -162,22 +167,24 @@ double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& s
   }
   double F[D + 1] = {};
   const double uj = s.u[j];
-  F[0] = K_s_ * (v_ * t0 - uj);
-  F[1] = K_s_ * v_;
+  F[0] = c.k_s(j) * (v_ * t0 - uj);
+  F[1] = c.k_s(j) * v_;
   for (int side = 0; side < 2; ++side) {
     const int nb = side == 0 ? j - 1 : j + 1;
+    if (f.side[side] == kNone) continue;
+    const double kj = c.spring_between(j, nb);
     switch (f.side[side]) {
       case kNone: continue;
-      case kFixed: F[0] += K_int_ * (s.u[nb] - uj); continue;
+      case kFixed: F[0] += kj * (s.u[nb] - uj); continue;
       case kSettled:
-        F[0] += K_int_ * (active.settled_u(nb, t0) - uj);
-        F[1] += K_int_ * active.settled_drift(nb);
+        F[0] += kj * (active.settled_u(nb, t0) - uj);
+        F[1] += kj * active.settled_drift(nb);
         continue;
       case kSpan: spans.row_taylor(nb, row); break;
       case kModal: active.modal_taylor(nb, t0, D, row); break;
     }
-    F[0] += K_int_ * (row[0] - uj);
-    for (int k = 1; k <= D; ++k) F[k] += K_int_ * row[k];
+    F[0] += kj * (row[0] - uj);
+    for (int k = 1; k <= D; ++k) F[k] += kj * row[k];
   }
   const double fs = c.f_static[j];
   double root = kInf;

@@ -61,7 +61,7 @@ class SpanScreen {
     Side side[2];     // a stuck block's neighbours (left, right)
     Value start, end;  // g (or its cheap lower bound) at the step's start and end, and its slope
     double M2, M4;    // bounds on |g''| and |g''''| (of the part that is not a modal bound)
-    double spread;    // K_int times a modal neighbour's bound (0 without one)
+    double spread;    // the spring to a modal neighbour times its bound (0 without one)
   };
   // g's cheap form at the step's start (end = false) or end, and its slope (slope = true).
   double cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active, const Fn& f,
@@ -72,7 +72,7 @@ class SpanScreen {
                     double h, double after);
   double poly_root(const double* g, double t0, double h, double after) const;
 
-  double K_int_, K_s_, v_, eps_v_;
+  double v_, eps_v_;
   std::vector<Fn> fns_;
   std::vector<double> root_;
   std::vector<int> hits_;

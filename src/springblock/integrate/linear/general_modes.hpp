@@ -17,5 +17,8 @@ namespace sb::event_detail {
 // Q (modes by column, eigenvalues rising) and lambda for the stiffness K and the weights w
 // (all > 0; all 1 gives K's orthonormal eigenvectors).
 void general_modes(const Factors& K, const std::vector<double>& w, Eigen::MatrixXd& Q, std::vector<double>& lambda);
+// The same through a per-thread cache (the same doubles).
+void cached_general_modes(const Factors& K, const std::vector<double>& w, Eigen::MatrixXd& Q,
+                          std::vector<double>& lambda);
 
 }  // namespace sb::event_detail

@@ -16,8 +16,7 @@ constexpr int kSampleResync = 64;
 }  // namespace
 
 ModalRuns::ModalRuns(const Chain& c, RunStore& store)
-    : K_int_(c.K_int),
-      eps_v_(kStopMargin * c.v_slider),
+    : eps_v_(kStopMargin * c.v_slider),
       store_(store),
       run_of_(c.N, -1),
       cursor_(c.N),

@@ -112,7 +112,7 @@ class ModalRuns {
   struct Scales {
     double u = 0, v = 0;
   };
-  double K_int_, eps_v_;
+  double eps_v_;
   Scales settle_;  // set_settle_scales
   RunStore& store_;
   std::vector<Run> runs_;

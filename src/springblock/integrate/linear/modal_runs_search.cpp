@@ -42,15 +42,16 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
   // waits until then with no march set up and no mode evaluated, and goes on from where the
   // envelope allows.
   {
-    double a = c.K_s * (c.v_slider * s.t - s.u[j]), b = c.K_s * c.v_slider, spread = 0;
+    double a = c.k_s(j) * (c.v_slider * s.t - s.u[j]), b = c.k_s(j) * c.v_slider, spread = 0;
     for (int side = 0; side < 2; ++side) {
       const int nb = side == 0 ? j - 1 : j + 1;
       if (nb < 0 || nb >= static_cast<int>(run_of_.size())) continue;
+      const double k = c.spring_between(j, nb);
       if (run_of_[nb] < 0) {
-        a += K_int_ * (base[side] - s.u[j]), b += K_int_ * nb_B[side];
+        a += k * (base[side] - s.u[j]), b += k * nb_B[side];
         continue;
       }
-      a += K_int_ * (store_.path_u(nb, s.t) - s.u[j]), b += K_int_ * store_.B(nb), spread += K_int_ * amplitude(nb);
+      a += k * (store_.path_u(nb, s.t) - s.u[j]), b += k * store_.B(nb), spread += k * amplitude(nb);
     }
     const double room = c.f_static[j] - spread;
     if (std::fabs(a) < room) {
@@ -59,13 +60,14 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
     }
   }
   march_.reset();
-  double a = c.K_s * (c.v_slider * s.t - s.u[j]), b = c.K_s * c.v_slider;
+  double a = c.k_s(j) * (c.v_slider * s.t - s.u[j]), b = c.k_s(j) * c.v_slider;
   for (int side = 0; side < 2; ++side) {
     const int nb = side == 0 ? j - 1 : j + 1;
     if (nb < 0 || nb >= static_cast<int>(run_of_.size())) continue;
+    const double k_nb = c.spring_between(j, nb);
     if (run_of_[nb] < 0) {
-      a += K_int_ * (base[side] - s.u[j]);
-      b += K_int_ * nb_B[side];
+      a += k_nb * (base[side] - s.u[j]);
+      b += k_nb * nb_B[side];
       continue;
     }
     Run& r = runs_[run_of_[nb]];
@@ -73,9 +75,9 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
     const double* row = sh.row(nb - r.lo);
     // The run's coordinates at s.t (its own origin may be older: it was kept across switches).
     scratch_at(r, s.t);
-    a += K_int_ * (store_.path_u(nb, s.t) - s.u[j]);
-    b += K_int_ * store_.B(nb);
-    for (int k = 0; k < r.hi - r.lo; ++k) march_.add_mode(K_int_ * row[k], sh.modes[k], r.lo + k, sh.steps.march[k].data());
+    a += k_nb * (store_.path_u(nb, s.t) - s.u[j]);
+    b += k_nb * store_.B(nb);
+    for (int k = 0; k < r.hi - r.lo; ++k) march_.add_mode(k_nb * row[k], sh.modes[k], r.lo + k, sh.steps.march[k].data());
   }
   march_.finish(store_.shapes().march_step());
   march_.set_affine(a, b);

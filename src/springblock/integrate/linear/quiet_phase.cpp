@@ -18,7 +18,7 @@ double affine_crossing(double a, double b, double f) {
 }  // namespace
 
 QuietPhase::QuietPhase(const Chain& c, RunStore& store)
-    : K_int_(c.K_int), slider_slope_(c.K_s * c.v_slider), store_(store), cursor_{{0, Coords(c.N)}, false}, kept_(cursor_) {
+    : slider_slope_(c.K_s * c.v_slider), store_(store), cursor_{{0, Coords(c.N)}, false}, kept_(cursor_) {
   const int N = c.N;
   for (int i = 0; i < N;) {
     if (c.contact[i]) {
@@ -40,7 +40,7 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
     if (!c.contact[j]) continue;
     Edge e;
     e.block = j;
-    if (K_int_ > 0) {
+    if (c.K_int > 0) {
       if (j > 0 && !c.contact[j - 1]) {
         e.seg[e.nseg] = seg_of[j - 1];
         e.row[e.nseg++] = segs_[seg_of[j - 1]].n - 1;
@@ -50,21 +50,25 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
         e.row[e.nseg++] = 0;
       }
     }
-    if (e.nseg) {
-      for (int n = 0; n < e.nseg; ++n) {
-        const GrooveRun& s = segs_[e.seg[n]];
-        const double* row = s.shape->row(e.row[n]);
-        for (int k = 0; k < s.n; ++k) e.march.add_mode(K_int_ * row[k], s.shape->modes[k], s.first + k);
-      }
-      e.march.finish();
-      EdgeForce f;
-      f.n = e.nseg;
-      for (int n = 0; n < e.nseg; ++n) f.term[n] = 2 * e.seg[n] + (e.row[n] == 0 ? 0 : 1);
-      edges_.forces.push_back(f);
-      edges_.list.push_back(std::move(e));
-    } else {
+    // A block beside no groove has the slider's slope, shared by all such blocks on a chain
+    // whose slider springs are equal (CommonSlopeSum sums them at once); where they differ it is
+    // an edge without ringing.
+    if (e.nseg == 0 && c.uniform()) {
       interior_.blocks.push_back(j);
+      continue;
     }
+    EdgeForce f;
+    f.n = e.nseg;
+    for (int n = 0; n < e.nseg; ++n) {
+      const GrooveRun& s = segs_[e.seg[n]];
+      const double* row = s.shape->row(e.row[n]);
+      f.k[n] = c.spring_between(j, e.row[n] == 0 ? s.first : s.first + s.n - 1);
+      f.term[n] = 2 * e.seg[n] + (e.row[n] == 0 ? 0 : 1);
+      for (int k = 0; k < s.n; ++k) e.march.add_mode(f.k[n] * row[k], s.shape->modes[k], s.first + k);
+    }
+    if (e.nseg) e.march.finish();
+    edges_.forces.push_back(f);
+    edges_.list.push_back(std::move(e));
   }
   interior_.a.resize(interior_.blocks.size());
   edges_.order.resize(edges_.list.size());
@@ -108,12 +112,13 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
     interior_.a[k] = c.driving_force(interior_.blocks[k], u, v, t0);
   for (std::size_t x = 0; x < edges_.list.size(); ++x) {
     Edge& e = edges_.list[x];
-    double a = c.driving_force(e.block, u, v, t0), b = c.K_s * c.v_slider;
+    double a = c.driving_force(e.block, u, v, t0), b = c.k_s(e.block) * c.v_slider;
     for (int n = 0; n < e.nseg; ++n) {
       const GrooveRun& s = segs_[e.seg[n]];
       const double* row = s.shape->row(e.row[n]);
-      b += c.K_int * store_.B(s.first + e.row[n]);
-      for (int k = 0; k < s.n; ++k) a -= c.K_int * row[k] * store_.q0()[s.first + k];
+      const double k_nb = edges_.forces[x].k[n];
+      b += k_nb * store_.B(s.first + e.row[n]);
+      for (int k = 0; k < s.n; ++k) a -= k_nb * row[k] * store_.q0()[s.first + k];
     }
     e.march.set_affine(a, b);
     edges_.forces[x].fa = a, edges_.forces[x].fb = b;
@@ -136,13 +141,14 @@ void QuietPhase::affine_forces(const Chain& c, const double* u, double* a, doubl
   for (int i = 0; i < c.N; ++i) {
     a[i] = b[i] = 0.0;
     if (!c.contact[i]) continue;
-    a[i] = -c.K_s * u[i];
-    b[i] = c.K_s * c.v_slider;
-    if (K_int_ > 0)
+    a[i] = -c.k_s(i) * u[i];
+    b[i] = c.k_s(i) * c.v_slider;
+    if (c.K_int > 0)
       for (int j : {i - 1, i + 1}) {
         if (j < 0 || j >= c.N) continue;
-        a[i] += K_int_ * ((c.contact[j] ? u[j] : store_.A(j)) - u[i]);
-        if (!c.contact[j]) b[i] += K_int_ * store_.B(j);
+        const double k = c.spring_between(i, j);
+        a[i] += k * ((c.contact[j] ? u[j] : store_.A(j)) - u[i]);
+        if (!c.contact[j]) b[i] += k * store_.B(j);
       }
   }
 }

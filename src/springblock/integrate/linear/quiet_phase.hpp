@@ -116,10 +116,10 @@ class QuietPhase {
 
   // What its RingingForces (quiet_ringing.hpp) reads: the phase's start, its segments (their
   // records in the store), the contact blocks beside them (edges: each force's affine part and
-  // the segment ends it rings with, as RingingForces numbers them) and those beside none (each
-  // with its force at t0, all with the slider's slope K_s v), K_int, and the sample cursor.
+  // the segment ends it rings with, as RingingForces numbers them, with the springs between) and
+  // those beside none (each with its force at t0, all with the slider's slope K_s v), and the
+  // sample cursor.
   double t0() const { return t0_; }
-  double K_int() const { return K_int_; }
   double slider_slope() const { return slider_slope_; }
   const RunStore& store() const { return store_; }
   const std::vector<GrooveRun>& segments() const { return segs_; }
@@ -159,7 +159,7 @@ class QuietPhase {
   void write_segment(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
                      double* v, bool ends_only);
 
-  double K_int_ = 0, t0_ = 0;
+  double t0_ = 0;
   double slider_slope_ = 0;  // K_s v: the slope of every contact block's force in a quiet phase
   RunStore& store_;
   std::vector<GrooveRun> segs_;

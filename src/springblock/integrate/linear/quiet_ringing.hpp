@@ -15,7 +15,6 @@ class QuietRinging final : public RingingForces {
   explicit QuietRinging(const QuietPhase& phase);
 
   double t0() const override { return phase_.t0(); }
-  double K_int() const override { return phase_.K_int(); }
   long phase() const override { return phase_.phases(); }
   const std::vector<double>& interior() const override { return phase_.interior_forces(); }
   double interior_slope() const override { return phase_.slider_slope(); }

@@ -124,7 +124,7 @@ const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts)
 RunShape RunShapes::make(int n, bool left, bool right) const {
   const double K_s = c_.K_s, K_int = c_.K_int, mass = c_.m, gamma = c_.gamma;
   RunShape sh;
-  sh.n = n, sh.left = left, sh.right = right;
+  sh.n = n, sh.path.left = left, sh.path.right = right;
   Factors& K = sh.K;
   for (int k = 0; k < n; ++k) K.diag.push_back(K_s + ((k > 0 || left) ? K_int : 0.0) + ((k + 1 < n || right) ? K_int : 0.0));
   K.off.assign(std::max(n - 1, 0), -K_int);
@@ -138,11 +138,17 @@ RunShape RunShapes::make(int n, bool left, bool right) const {
   K.solve(path.a0.data(), path.a0.data());
   if (left) path.gL[0] = K_int, K.solve(path.gL.data(), path.gL.data());
   if (right) path.gR[n - 1] = K_int, K.solve(path.gR.data(), path.gR.data());
-  // The modes and the constants of the derivative bounds: from q'' = -gamma q' - omega^2 q and
-  // omega |q| <= sqrt(E), |q''| <= (gamma + omega) sqrt(E) and q^(j+2) = -gamma q^(j+1) -
-  // omega^2 q^(j) for the higher ones.
+  cached_modes(K_s, K_int, n, left, right, sh.Q, sh.spectrum.lambda);
+  finish_modes(sh, mass, gamma);
+  return sh;
+}
+
+// The modes' rows and oscillators and the constants of the derivative bounds, from Q and lambda:
+// from q'' = -gamma q' - omega^2 q and omega |q| <= sqrt(E), |q''| <= (gamma + omega) sqrt(E) and
+// q^(j+2) = -gamma q^(j+1) - omega^2 q^(j) for the higher ones.
+void RunShapes::finish_modes(RunShape& sh, double mass, double gamma) {
+  const int n = sh.n;
   Spectrum& sp = sh.spectrum;
-  cached_modes(K_s, K_int, n, left, right, sh.Q, sp.lambda);
   sh.Qr.resize(static_cast<std::size_t>(n) * n);
   for (int r = 0; r < n; ++r)
     for (int k = 0; k < n; ++k) sh.Qr[static_cast<std::size_t>(r) * n + k] = sh.Q(r, k);
@@ -155,7 +161,6 @@ RunShape RunShapes::make(int n, bool left, bool right) const {
     const double c4 = gamma * c3 + m.omega2 * c2, c5 = gamma * c4 + m.omega2 * c3;
     sp.c[0].push_back(c2), sp.c[1].push_back(c3), sp.c[2].push_back(c4), sp.c[3].push_back(c5);
   }
-  return sh;
 }
 
 // Each transition costs two mode evaluations (an exp and a sincos), so a shape makes only those
@@ -192,6 +197,8 @@ void RunShapes::set_sample_transitions(RunShape& sh) const {
 void RunShapes::set_sample_dt(double dt) {
   sample_dt_ = dt;
   for (auto& [key, sh] : shapes_)
+    if (sh.steps.parts & RunShape::kSample) set_sample_transitions(sh);
+  for (auto& [key, sh] : ranged_)
     if (sh.steps.parts & RunShape::kSample) set_sample_transitions(sh);
 }
 

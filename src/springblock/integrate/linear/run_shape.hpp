@@ -19,11 +19,13 @@
 //     and the constants of the bounds on a row's derivatives.
 // On a chain of identical blocks K depends only on (n, left held, right held) and its modes are
 // sampled sines and cosines (run_shape.cpp), so the shapes are keyed by that triple. A chain of
-// blocks that differ keys them by the run's blocks instead and diagonalises K itself: that is
-// the general case, and these closed forms its fast special case.
+// blocks that differ keys them by the run's blocks instead and solves K Q = W Q diag(lambda), W
+// the masses over the chain's nominal m (general_modes.hpp): that is the general case, and these
+// closed forms its fast special case (W = I). A deviation x projects onto the modes as Q^T W x.
 #include <array>
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <tuple>
 #include <vector>
 
@@ -47,9 +49,11 @@ struct Factors {
   Eigen::MatrixXd dense() const;
 };
 
-// The affine path's pieces: B, and A = a0 + u_left gL + u_right gR - K^-1 f_kin.
+// The affine path's pieces: B, and A = a0 + u_left gL + u_right gR - K^-1 f_kin, with whether a
+// stuck block holds each end (else it is a free chain end, and gL or gR is 0).
 struct AffinePieces {
   std::vector<double> B, a0, gL, gR;
+  bool left = false, right = false;
   // Row k's A without friction, from the held ends' positions (0 at a free end).
   double A(int k, double uL, double uR) const { return a0[k] + uL * gL[k] + uR * gR[k]; }
 };
@@ -77,10 +81,10 @@ struct RunShape {
   // The transitions a shape carries once a user has asked for them.
   enum Parts : std::uint8_t { kStep = 1, kMarch = 2, kSample = 4 };
   int n = 0;
-  bool left = false, right = false;  // held by a stuck block at that end (else a free chain end)
   Factors K;
   AffinePieces path;
-  Eigen::MatrixXd Q;               // modes by column, orthonormal, eigenvalues rising
+  Eigen::MatrixXd Q;               // modes by column, Q^T W Q = I, eigenvalues rising
+  std::vector<double> weight;      // W: the rows' masses over the chain's m; empty (all 1) on a uniform chain
   std::vector<double> Qr;          // the same by row
   std::vector<DampedMode> modes;   // alpha = gamma / 2, omega^2 = lambda / m
   Spectrum spectrum;
@@ -117,26 +121,33 @@ class RunShapes {
   // Transitions over the exact stepper's step (step_for) and EdgeMarch's grid step.
   explicit RunShapes(const Chain& c);
   // The shape of run r of the chain, with the transitions `parts` (RunShape::Parts) made.
-  // References stay valid for the life of this object.
-  const RunShape& of(BlockRange r, std::uint8_t parts = 0) { return get(r.size(), r.lo > 0, r.hi < c_.N, parts); }
+  // References stay valid for the life of this object. A uniform chain's shapes depend on the
+  // run's length and ends only (get); a chain whose blocks differ has one per run (general).
+  const RunShape& of(BlockRange r, std::uint8_t parts = 0) {
+    return c_.uniform() ? get(r.size(), r.lo > 0, r.hi < c_.N, parts) : general(r, parts);
+  }
   const RunShape& get(int n, bool left, bool right, std::uint8_t parts = 0);
+  const RunShape& general(BlockRange r, std::uint8_t parts = 0);
   // Sample transitions of every shape, present and future.
   void set_sample_dt(double dt);
   double sample_dt() const { return sample_dt_; }
   double step() const { return step_; }
   double march_step() const { return march_step_; }
-  int size() const { return static_cast<int>(shapes_.size()); }
+  int size() const { return static_cast<int>(shapes_.size() + ranged_.size()); }
   // The exact stepper's step for chain c: 0.75 rad of the fastest rate any run's mode can have.
   static double step_for(const Chain& c);
 
  private:
   RunShape make(int n, bool left, bool right) const;
+  RunShape make_general(BlockRange r) const;
+  static void finish_modes(RunShape& sh, double mass, double gamma);
   void add_parts(RunShape& sh, std::uint8_t parts) const;
   void set_sample_transitions(RunShape& sh) const;
   const Chain& c_;
   double step_, march_step_, sample_dt_ = 0;
   std::map<std::tuple<int, bool, bool>, RunShape> shapes_;
   std::vector<RunShape*> index_;  // shapes_ by 4 n + 2 left + right: every projection looks one up
+  std::map<std::pair<int, int>, RunShape> ranged_;  // a chain whose blocks differ: by (lo, hi)
 };
 
 }  // namespace sb::event_detail

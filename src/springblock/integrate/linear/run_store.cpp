@@ -83,7 +83,7 @@ void RunStore::drop(int lo) { records_.drop(lo); }
 void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir) {
   const RunShape& sh = *run.shape;
   const int lo = run.lo, n = run.n();
-  const double uL = sh.left ? u[lo - 1] : 0.0, uR = sh.right ? u[run.hi] : 0.0;
+  const double uL = sh.path.left ? u[lo - 1] : 0.0, uR = sh.path.right ? u[run.hi] : 0.0;
   for (int k = 0; k < n; ++k) {
     A_[lo + k] = sh.path.A(k, uL, uR);
     B_[lo + k] = sh.path.B[k];
@@ -114,6 +114,9 @@ const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, c
       x[k] = u[lo + k] - A_[lo + k] - B_[lo + k] * t;
       y[k] = v[lo + k] - B_[lo + k];
     }
+    // Q^T W: the rows' masses weigh the deviation on a chain whose blocks differ.
+    const std::vector<double>& w = run.shape->weight;
+    for (int k = 0; k < static_cast<int>(w.size()); ++k) x[k] *= w[k], y[k] *= w[k];
     rows_times(n, run.shape->Qr.data(), x, y, modes_.q.data() + lo, modes_.p.data() + lo);
   }
   set_bounds(run, dir);

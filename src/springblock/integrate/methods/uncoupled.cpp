@@ -28,22 +28,22 @@ class Solver {
         s_(s),
         log_(log),
         b_(c.N),
-        mode_{0.5 * c.gamma, c.K_s / c.m},
+        modes_(c),
         friction_{std::vector<double>(c.N, 0.0), std::vector<double>(c.N, 0.0)} {}
 
   void run(double t_end, double sample_dt, Observer& obs);
 
  private:
-  // Particular solution of a moving block with friction phi at time t.
-  double u_p(double phi, double t) const {
-    return c_.v_slider * t - phi / c_.K_s - c_.gamma * c_.v_slider / mode_.omega2;
+  // Particular solution of moving block i with friction phi at time t.
+  double u_p(int i, double phi, double t) const {
+    return c_.v_slider * t - phi / c_.k_s(i) - c_.gamma * c_.v_slider / modes_.of(i).omega2;
   }
   void eval(int i, double t, double& u, double& v) {
     const Block& b = b_[i];
     double x, xd;
-    mode_.eval(b.x0, b.p0, t - b.t_ref, x, xd);
+    modes_.of(i).eval(b.x0, b.p0, t - b.t_ref, x, xd);
     ++evals_;
-    u = u_p(b.phi, t) + x;
+    u = u_p(i, b.phi, t) + x;
     v = c_.v_slider + xd;
   }
   // Start a moving phase of block i at time t from its current u, v (friction phi).
@@ -51,15 +51,15 @@ class Solver {
     Block& b = b_[i];
     b.t_ref = t;
     b.phi = phi;
-    b.x0 = s_.u[i] - u_p(phi, t);
+    b.x0 = s_.u[i] - u_p(i, phi, t);
     b.p0 = s_.v[i] - c_.v_slider;
     // Released from rest with its pull short of kinetic friction by round-off only (|deficit|
     // <= 1e-9 f_kin, the tolerance of switching.hpp): start from exact balance, x''(0) = 0.
     // Otherwise a clipped pair (f_kin = f_static, released exactly at its threshold) would
     // stop at once and be released again at the same instant, for ever.
     if (phi != 0.0 && s_.v[i] == 0.0) {
-      const double deficit = std::copysign(1.0, phi) * (c_.K_s * (c_.v_slider * t - s_.u[i]) - phi);
-      if (deficit < 0.0 && deficit >= -1e-9 * std::fabs(phi)) b.x0 = c_.gamma * c_.v_slider / mode_.omega2;
+      const double deficit = std::copysign(1.0, phi) * (c_.k_s(i) * (c_.v_slider * t - s_.u[i]) - phi);
+      if (deficit < 0.0 && deficit >= -1e-9 * std::fabs(phi)) b.x0 = c_.gamma * c_.v_slider / modes_.of(i).omega2;
     }
   }
   double first_stop(int i);
@@ -73,7 +73,7 @@ class Solver {
   // friction. It changes only at the block's own events (per_block stretches).
   void update_friction(int i) {
     if (!c_.contact[i]) return;
-    if (s_.dir[i] == 0) friction_.a[i] = -c_.K_s * s_.u[i], friction_.b[i] = c_.K_s * c_.v_slider;
+    if (s_.dir[i] == 0) friction_.a[i] = -c_.k_s(i) * s_.u[i], friction_.b[i] = c_.k_s(i) * c_.v_slider;
     else friction_.a[i] = s_.dir[i] * c_.f_kinetic[i], friction_.b[i] = 0.0;
   }
 
@@ -81,7 +81,16 @@ class Solver {
   State& s_;
   std::vector<double>* log_;
   std::vector<Block> b_;
-  DampedMode mode_;
+  // Each block's oscillator on its slider spring: one for a chain of equal blocks.
+  struct Modes {
+    DampedMode uniform;
+    std::vector<DampedMode> block;
+    explicit Modes(const Chain& c) : uniform{0.5 * c.gamma, c.K_s / c.m} {
+      if (!c.uniform())
+        for (int i = 0; i < c.N; ++i) block.push_back(DampedMode{0.5 * c.gamma, c.k_s(i) / c.mass(i)});
+    }
+    const DampedMode& of(int i) const { return block.empty() ? uniform : block[i]; }
+  } modes_;
   struct {
     std::vector<double> a, b;
   } friction_;  // each block's friction force a + b t between its events
@@ -99,7 +108,7 @@ class Solver {
 
 double Solver::slip_time(int i, double t) const {
   // Stuck: F(t') = F(t) + K_s v_s (t' - t) reaches +-f_static.
-  const double F = c_.K_s * (c_.v_slider * t - s_.u[i]), rate = c_.K_s * c_.v_slider;
+  const double F = c_.k_s(i) * (c_.v_slider * t - s_.u[i]), rate = c_.k_s(i) * c_.v_slider;
   if (rate == 0.0) return kInf;
   const double target = rate > 0 ? c_.f_static[i] : -c_.f_static[i];
   return t + std::max((target - F) / rate, 0.0);
@@ -107,7 +116,7 @@ double Solver::slip_time(int i, double t) const {
 
 double Solver::first_stop(int i) {
   const Block& b = b_[i];
-  const double tau = first_stop_tau(mode_, b.x0, b.p0, s_.dir[i], c_.v_slider, b.t_ref, evals_);
+  const double tau = first_stop_tau(modes_.of(i), b.x0, b.p0, s_.dir[i], c_.v_slider, b.t_ref, evals_);
   return tau == kInf ? kInf : b.t_ref + tau;
 }
 

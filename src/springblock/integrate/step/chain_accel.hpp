@@ -27,8 +27,8 @@ SB_INLINE void chain_accel(const Chain& c, int lo, int hi, const double* __restr
   for (int i = first; i < last; ++i) a[i] = mobile[i] * inv_m * force_interior<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
 }
 
-// The same for a chain whose blocks differ in slider spring, mass or internal springs (RK4 only):
-// each block's force over its own mass.
+// The same for a chain whose blocks differ in slider spring, mass or internal springs: each
+// block's force over its own mass.
 template <bool Coupled, bool Damped>
 SB_INLINE void chain_accel_per_block(const Chain& c, int lo, int hi, const double* __restrict u,
                                      const double* __restrict v, double t, const double* __restrict mobile,
@@ -43,6 +43,15 @@ SB_INLINE void chain_accel_per_block(const Chain& c, int lo, int hi, const doubl
   if (last == N && first < last) one(--last);
   for (int i = first; i < last; ++i)
     a[i] = mobile[i] * inv_m[i] * force_interior<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
+}
+
+// Either, as the chain is: the steppers of the event method, which step a few spans per stage.
+template <bool Coupled, bool Damped>
+SB_INLINE void chain_accel_of(const Chain& c, int lo, int hi, const double* __restrict u, const double* __restrict v,
+                              double t, const double* __restrict mobile, const double* __restrict f_kin,
+                              double* __restrict a) {
+  if (c.uniform()) chain_accel<Coupled, Damped>(c, lo, hi, u, v, t, mobile, f_kin, a);
+  else chain_accel_per_block<Coupled, Damped>(c, lo, hi, u, v, t, mobile, f_kin, a);
 }
 
 }  // namespace sb::event_detail

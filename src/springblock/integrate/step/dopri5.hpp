@@ -93,7 +93,7 @@ SB_KERNEL_CLONES void Dopri5::first_stage(const Chain& c, const std::vector<Bloc
                          double t, const double* mobile, const double* f_kin) {
   for (const BlockRange& sp : spans) {
     for (int i = sp.lo; i < sp.hi; ++i) k_[0][i] = v[i];
-    chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, u, v, t, mobile, f_kin, k_[7]);
+    chain_accel_of<Coupled, Damped>(c, sp.lo, sp.hi, u, v, t, mobile, f_kin, k_[7]);
   }
 }
 
@@ -137,7 +137,7 @@ SB_KERNEL_CLONES double Dopri5::attempt(const Chain& c, const std::vector<BlockR
   // Stage s from the trial positions ut and the trial velocities already in K[s].
   auto stage = [&](int s, double cs, const double* pos) __attribute__((always_inline)) {
     for (const BlockRange& sp : spans)
-      chain_accel<Coupled, Damped>(c, sp.lo, sp.hi, pos, K[s], t + cs * h, mobile, f_kin, K[7 + s]);
+      chain_accel_of<Coupled, Damped>(c, sp.lo, sp.hi, pos, K[s], t + cs * h, mobile, f_kin, K[7 + s]);
   };
   for (const BlockRange& sp : spans) {
     comb(sp.lo, sp.hi, ut, u, h, T::a21, K[0]);
