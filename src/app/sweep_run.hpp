@@ -6,7 +6,7 @@
 namespace sb::app {
 
 struct SweepOptions {
-  std::string file, out;
+  std::string file, out, units;  // units: the per-unit records file, if asked
   int threads = 0;
   bool resume = false, progress = false;
 };

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# springblock sweep under mpirun: 2 ranks and 4 oversubscribed ranks give the numbers of one
+# springblock sweep under mpirun: 1, 2 and 4 oversubscribed ranks give the numbers of one
 # process, bit for bit, and so does springblock run --reps 8 on 2 ranks; a worker rank killed halfway is reported with the unit it lost, and
 # --resume (on another rank count) computes only the missing units, again with the same numbers;
 # a worker stopped by SIGTERM gives its unit back and the others finish the sweep;
+# a killed job leaves a valid partial results file (OUT.partial) and no OUT;
 # a bad sweep file is refused once, with exit 2 and nothing written.
 # Usage: sweep_mpi.sh SPRINGBLOCK PYTHON MPIEXEC
 set -u
 sb=$1 py=$2 mpirun=$3
 here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../../.." && pwd)
 example="$here/../../../examples/sweep.toml"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -15,7 +17,7 @@ fail=0
 mpi() { "$mpirun" --oversubscribe --allow-run-as-root "$@"; }
 
 "$sb" sweep "$example" --threads 2 --out "$dir/one.jsonl" >/dev/null 2>&1 || { echo "FAIL one process"; exit 1; }
-for np in 2 4; do
+for np in 1 2 4; do
   mpi -np $np "$sb" sweep "$example" --threads 1 --out "$dir/np$np.jsonl" >"$dir/np$np.txt" 2>&1 ||
     { echo "FAIL mpirun -np $np"; cat "$dir/np$np.txt"; fail=1; continue; }
   grep -q "on $np rank(s)" "$dir/np$np.txt" || { echo "FAIL -np $np did not run on $np ranks"; fail=1; }
@@ -65,6 +67,8 @@ victim=$(rank1_when_busy)
 wait $job 2>/dev/null
 [ $? -ne 0 ] || { echo "FAIL the job with a killed rank exited 0"; fail=1; }
 [ ! -e "$dir/k.jsonl" ] || { echo "FAIL a killed job wrote results"; fail=1; }
+PYTHONPATH="$root" PYTHONDONTWRITEBYTECODE=1 "$py" -m tools.sweep_results "$dir/k.jsonl" | grep -q "^partial: " ||
+  { echo "FAIL the killed job left no valid partial results file"; fail=1; }
 grep -q "in flight (lost, recomputed on resume): .*rank 1: [0-9]" "$dir/err" ||
   { echo "FAIL rank 0 did not report the units rank 1 lost"; cat "$dir/err"; fail=1; }
 done_before=$(finished "$dir/k.jsonl.checkpoint")
