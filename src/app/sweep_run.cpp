@@ -85,14 +85,24 @@ void show_progress(const Ledger& l, int units_total, int ranks, int threads) {
 
 parallel::Hooks hooks(Ledger& l, bool progress, int units_total, const parallel::Scheduler& s) {
   parallel::Hooks h;
-  h.assigned = [&l](int id, int rank) { l.checkpoint.assigned(id, rank); };
-  h.finished = [&l](int id, int rank, nlohmann::json record) {
-    record["rank"] = rank;
+  h.assigned = [&l](const std::vector<int>& ids, int rank) {
     const auto t0 = Clock::now();
-    const std::string line = l.checkpoint.finished(record);
+    l.checkpoint.assigned(ids, rank);
     l.checkpoint_s += std::chrono::duration<double>(Clock::now() - t0).count();
-    if (l.unit_records) l.unit_records->append(line);
-    l.results.add(l.units[id].scene, l.units[id].rep, record);
+  };
+  h.settled = [&l] {
+    const auto t0 = Clock::now();
+    l.checkpoint.flush();
+    l.checkpoint_s += std::chrono::duration<double>(Clock::now() - t0).count();
+    if (l.unit_records) l.unit_records->flush();
+  };
+  h.finished = [&l](int id, int, nlohmann::json result) {
+    const auto& line = result.at("record").get_ref<const std::string&>();
+    const auto t0 = Clock::now();
+    l.checkpoint.finished(id, line);
+    l.checkpoint_s += std::chrono::duration<double>(Clock::now() - t0).count();
+    if (l.unit_records) l.unit_records->hold(line);
+    l.results.add(l.units[id].scene, l.units[id].rep, result.at("numbers"));
     l.cost_now += l.cost(id);
     ++l.computed;
   };
@@ -160,6 +170,7 @@ int finish(const SweepOptions& o, const std::vector<sweep::SweepScene>& scenes, 
            const parallel::Outcome& out, const parallel::Scheduler& s, const std::string& command_line) {
   shell::end_progress_line();
   for (auto& note : out.notes) std::fprintf(stderr, "springblock: %s\n", note.c_str());
+  l.checkpoint.flush();
   l.results.complete(header(o, scenes, l, out, s, command_line), l.checkpoint);
   if (l.unit_records) l.unit_records->rename_to(o.units);
   l.checkpoint.remove();  // the results hold every unit now
@@ -185,7 +196,7 @@ std::unique_ptr<sweep::Checkpoint> open_checkpoint(const SweepOptions& o, const 
   }
   auto resumed = [&](const nlohmann::json& record) {
     const auto& u = units.at(record.at("unit").get<int>());
-    results.add(u.scene, u.rep, record);
+    results.add(u.scene, u.rep, sweep::record_numbers(record));
   };
   return std::make_unique<sweep::Checkpoint>(out_path(o) + ".checkpoint", sweep::fingerprint(scenes),
                                              static_cast<int>(units.size()), o.resume, resumed);
@@ -215,7 +226,7 @@ std::unique_ptr<sweep::LineFile> start_unit_records(const std::string& path, con
 }  // namespace
 
 int run_sweep(const SweepOptions& o, const std::string& command_line) {
-  auto sched = make_scheduler(o.threads);
+  auto sched = make_scheduler(o.threads, o.batch_ms / 1000);
   const bool lead = sched->coordinator();
   std::vector<sweep::SweepScene> scenes;
   std::vector<sweep::Unit> units;
@@ -242,7 +253,14 @@ int run_sweep(const SweepOptions& o, const std::string& command_line) {
     return lead ? shell::kBadInput : 0;  // a worker leaves quietly, as above
   }
   const auto* interrupt = shell::catch_interrupts();
-  auto run_unit = [&](int id, const std::atomic<bool>* stop) { return sweep::run_unit(scenes, units, id, stop); };
+  // A unit's result travels as its record's text (written to the checkpoint as it is) and the
+  // few numbers its scene's statistics need: the coordinator parses those, not the record.
+  auto run_unit = [&, rank = sched->rank()](int id, const std::atomic<bool>* stop) -> nlohmann::json {
+    auto record = sweep::run_unit(scenes, units, id, stop);
+    if (record.is_null()) return record;
+    record["rank"] = rank;
+    return {{"record", record.dump()}, {"numbers", sweep::record_numbers(record)}};
+  };
   if (!lead) {
     sched->run({}, run_unit, {}, interrupt);
     return shell::kOk;

@@ -140,8 +140,8 @@ TEST(SweepCheckpoint, ResumeKeepsFinishedUnitsDropsACutLineAndReportsLostOnes) {
   const std::string path = (dir.path / "c.checkpoint").string();
   {
     sb::sweep::Checkpoint cp(path, "abc", 4, false);
-    cp.assigned(0, 0);
-    cp.assigned(1, 1);
+    cp.assigned({0}, 0);
+    cp.assigned({1, 3}, 1);
     cp.finished({{"unit", 0}, {"x", 0.1}});
   }
   std::ofstream(path, std::ios::app) << R"({"unit": 1, "x")";  // a kill mid-write
@@ -154,9 +154,10 @@ TEST(SweepCheckpoint, ResumeKeepsFinishedUnitsDropsACutLineAndReportsLostOnes) {
   EXPECT_FALSE(cp.done(1));
   EXPECT_EQ(resumed, std::vector<int>{0});
   EXPECT_EQ(nlohmann::json::parse(cp.record_text(0)).at("x").get<double>(), 0.1);
-  ASSERT_EQ(cp.lost().size(), 1u);
+  ASSERT_EQ(cp.lost().size(), 2u);  // 1 and 3, handed out together
   EXPECT_EQ(cp.lost()[0].unit, 1);
   EXPECT_EQ(cp.lost()[0].rank, 1);
+  EXPECT_EQ(cp.lost()[1].unit, 3);
   cp.finished({{"unit", 2}, {"x", 0.2}});
   cp.sync();
   sb::sweep::Checkpoint again(path, "abc", 4, true);  // the cut line is gone, appends parse

@@ -112,7 +112,7 @@ TEST(SweepResults, StreamedFileEqualsTheInMemoryOneWhateverTheFinishingOrder) {
   for (int id : order) {
     records[id] = fake_record(id, units[id].scene, units[id].rep);
     cp.finished(records[id]);
-    results.add(units[id].scene, units[id].rep, records[id]);
+    results.add(units[id].scene, units[id].rep, sb::sweep::record_numbers(records[id]));
     // Every line of the partial file is whole JSON; one per complete scene, after the header.
     const auto lines = lines_of(results.partial());
     ASSERT_EQ(static_cast<int>(lines.size()), 1 + results.scenes_complete());
@@ -144,13 +144,13 @@ TEST(SweepResults, ResumedRecordsCompleteTheirScenesBeforeThePartialFileStarts) 
   sb::sweep::Checkpoint cp(out + ".checkpoint", "f", static_cast<int>(units.size()), true,
                            [&](const nlohmann::json& r) {
                              const auto& u = units.at(r.at("unit").get<int>());
-                             results.add(u.scene, u.rep, r);
+                             results.add(u.scene, u.rep, sb::sweep::record_numbers(r));
                            });
   results.start({{"kind", "sweep"}});
   EXPECT_EQ(lines_of(results.partial()).size(), 2u);  // the header and scene 0 (units 0-4)
   for (int id = 7; id < static_cast<int>(units.size()); ++id) {
     cp.finished(records[id] = fake_record(id, units[id].scene, units[id].rep));
-    results.add(units[id].scene, units[id].rep, records[id]);
+    results.add(units[id].scene, units[id].rep, sb::sweep::record_numbers(records[id]));
   }
   results.complete({{"kind", "sweep"}}, cp);
   EXPECT_EQ(text_of(out), in_memory_results(scenes, records, {{"kind", "sweep"}}));

@@ -6,12 +6,21 @@ Dealer::Dealer(const std::vector<int>& ids, const Hooks& hooks, const std::atomi
     : queue_(ids.begin(), ids.end()), hooks_(hooks), interrupt_(interrupt) {}
 
 std::optional<int> Dealer::next(int rank) {
-  if (queue_.empty() || interrupted()) return std::nullopt;
-  const int id = queue_.front();
-  queue_.pop_front();
-  holder_[id] = rank;
-  if (hooks_.assigned) hooks_.assigned(id, rank);
-  return id;
+  const auto ids = next_batch(rank, 1);
+  if (ids.empty()) return std::nullopt;
+  return ids[0];
+}
+
+std::vector<int> Dealer::next_batch(int rank, int count) {
+  std::vector<int> ids;
+  if (interrupted()) return ids;
+  while (static_cast<int>(ids.size()) < count && !queue_.empty()) {
+    ids.push_back(queue_.front());
+    queue_.pop_front();
+    holder_[ids.back()] = rank;
+  }
+  if (!ids.empty() && hooks_.assigned) hooks_.assigned(ids, rank);
+  return ids;
 }
 
 void Dealer::finished(int id, int rank, nlohmann::json record) {
@@ -46,10 +55,12 @@ void serve_pool(UnitPool& pool, Dealer& dealer, int rank, std::chrono::milliseco
     if (!id) break;
     pool.submit(*id);
   }
+  dealer.settle();  // the assignments are on record before the units can finish
   if (pool.busy() == 0) return;
   if (auto d = pool.collect(wait)) {
     if (d->error) std::rethrow_exception(d->error);
     dealer.finished(d->id, rank, std::move(d->result));
+    dealer.settle();
   }
 }
 

@@ -63,7 +63,9 @@ void Checkpoint::load(const std::string& fingerprint, int units, LineFile& clean
         throw InputError("resume", "checkpoint '" + path_ + "' belongs to another sweep (other scenes or "
                                    "repetitions); delete it to start this one over");
     } else if (j.contains("assigned")) {
-      handed_to.at(j.at("assigned").get<int>()) = j.at("rank").get<int>();
+      const auto& ids = j.at("assigned");
+      for (const auto& id : ids.is_array() ? ids : nlohmann::json::array({ids}))
+        handed_to.at(id.get<int>()) = j.at("rank").get<int>();
     } else {
       const int unit = j.at("unit").get<int>();
       if (offset_.at(unit) >= 0) continue;
@@ -81,18 +83,27 @@ std::string Checkpoint::record_text(int unit) const { return file_->line_at(offs
 void Checkpoint::sync() {
   if (file_) file_->sync();
   last_sync_s_ = steady_s();
+  unsynced_ = false;
 }
 
-void Checkpoint::assigned(int unit, int rank) { file_->append(nlohmann::json{{"assigned", unit}, {"rank", rank}}.dump()); }
+void Checkpoint::flush() {
+  if (!file_) return;
+  file_->flush();
+  if (unsynced_ && steady_s() - last_sync_s_ >= 0.1) sync();
+}
 
-std::string Checkpoint::finished(const nlohmann::json& record) {
-  std::string line = record.dump();
-  const int unit = record.at("unit").get<int>();
-  const std::int64_t at = file_->append(line);
+void Checkpoint::assigned(const std::vector<int>& units, int rank) {
+  // One unit as a number, as earlier checkpoints hold it; a batch as a list.
+  const nlohmann::json ids = units.size() == 1 ? nlohmann::json(units[0]) : nlohmann::json(units);
+  file_->hold(nlohmann::json{{"assigned", ids}, {"rank", rank}}.dump());
+  unsynced_ = true;
+}
+
+void Checkpoint::finished(int unit, const std::string& record_text) {
+  const std::int64_t at = file_->hold(record_text);
+  unsynced_ = true;
   if (offset_.at(unit) < 0) ++done_count_;
   offset_[unit] = at;
-  if (steady_s() - last_sync_s_ >= 0.1) sync();
-  return line;
 }
 
 void Checkpoint::remove() {

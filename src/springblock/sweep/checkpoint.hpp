@@ -47,10 +47,14 @@ class Checkpoint {
   // of every double).
   std::string record_text(int unit) const;
 
-  void assigned(int unit, int rank);  // logged, not synced
-  // Logged, fsynced if the last fsync is 0.1 s old. Returns the line written (record.dump()).
-  std::string finished(const nlohmann::json& record);
-  void sync();    // fsync now (the run stops)
+  // Units handed out together, as one line; unit `unit`'s record as text (one line). Both are
+  // held until flush(), which the coordinator calls once it has taken in what one message (or
+  // one of its own threads) brought: one write() per batch, not per unit.
+  void assigned(const std::vector<int>& units, int rank);
+  void finished(int unit, const std::string& record_text);
+  void finished(const nlohmann::json& record) { finished(record.at("unit").get<int>(), record.dump()); }
+  void flush();   // writes what is held; fsyncs if the last fsync is 0.1 s old
+  void sync();    // writes what is held and fsyncs now (the run stops)
   void remove();  // the sweep is complete: its results hold it all
 
  private:
@@ -59,6 +63,7 @@ class Checkpoint {
   std::string path_;
   std::unique_ptr<LineFile> file_;
   double last_sync_s_ = 0;            // steady-clock seconds of the last fsync
+  bool unsynced_ = false;             // lines held or written since then
   std::vector<std::int64_t> offset_;  // per unit: where its record starts, -1 until finished
   int done_count_ = 0;
   std::vector<LostUnit> lost_;

@@ -23,18 +23,39 @@ LineFile::LineFile(std::string path) : path_(std::move(path)) {
 }
 
 LineFile::~LineFile() {
+  try {
+    if (fd_ >= 0) flush();
+  } catch (...) {  // a destructor does not throw: what was held is lost, as in a kill
+  }
   if (fd_ >= 0) ::close(fd_);
 }
 
-std::int64_t LineFile::append(const std::string& line) {
-  const std::string text = line + "\n";
-  if (::write(fd_, text.data(), text.size()) != static_cast<ssize_t>(text.size())) line_file_error("append to", path_);
+std::int64_t LineFile::hold(const std::string& line) {
   const std::int64_t at = size_;
-  size_ += static_cast<std::int64_t>(text.size());
+  held_ += line;
+  held_ += '\n';
+  size_ += static_cast<std::int64_t>(line.size() + 1);
+  return at;
+}
+
+void LineFile::flush() {
+  if (held_.empty()) return;
+  if (::write(fd_, held_.data(), held_.size()) != static_cast<ssize_t>(held_.size())) line_file_error("append to", path_);
+  held_.clear();
+}
+
+std::int64_t LineFile::append(const std::string& line) {
+  const std::int64_t at = hold(line);
+  flush();
   return at;
 }
 
 std::string LineFile::line_at(std::int64_t offset) const {
+  const std::int64_t written = size_ - static_cast<std::int64_t>(held_.size());
+  if (offset >= written) {
+    const auto from = static_cast<std::size_t>(offset - written);
+    return held_.substr(from, held_.find('\n', from) - from);
+  }
   std::string out;
   char buf[4096];
   for (;;) {
@@ -48,7 +69,9 @@ std::string LineFile::line_at(std::int64_t offset) const {
 }
 
 void LineFile::sync() {
-  if (fd_ >= 0 && ::fsync(fd_) != 0) line_file_error("sync", path_);
+  if (fd_ < 0) return;
+  flush();
+  if (::fsync(fd_) != 0) line_file_error("sync", path_);
 }
 
 void LineFile::rename_to(const std::string& path) {
@@ -57,6 +80,7 @@ void LineFile::rename_to(const std::string& path) {
 }
 
 void LineFile::remove() {
+  held_.clear();
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
   std::remove(path_.c_str());

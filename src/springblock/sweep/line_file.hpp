@@ -3,7 +3,8 @@
 // per-unit records): each line goes out with one write() on an O_APPEND descriptor, so a kill
 // leaves at most its last line cut short and a reader finds whole lines (a line is complete once
 // its '\n' is there). A line is read back by the offset it was written at, which is how the
-// coordinator keeps a record on disk instead of in memory.
+// coordinator keeps a record on disk instead of in memory. A file closed or destroyed writes the
+// lines it holds.
 #include <cstdint>
 #include <string>
 
@@ -19,9 +20,13 @@ class LineFile {
 
   // Appends `line` (without its '\n') and returns the offset it starts at.
   std::int64_t append(const std::string& line);
-  // The line starting at `offset`, without its '\n'.
+  // Adds `line` to those held for the next flush() (or append), which writes them all with one
+  // write(): how a batch of records costs one system call. Returns the offset it will start at.
+  std::int64_t hold(const std::string& line);
+  void flush();
+  // The line starting at `offset`, without its '\n' (read from the file, or from the held lines).
   std::string line_at(std::int64_t offset) const;
-  void sync();  // fsync
+  void sync();  // flush, then fsync
   // Gives the file a new name (rename(2), atomic); it stays open for appending.
   void rename_to(const std::string& path);
   void remove();  // closes and deletes it
@@ -30,7 +35,8 @@ class LineFile {
  private:
   std::string path_;
   int fd_ = -1;
-  std::int64_t size_ = 0;
+  std::int64_t size_ = 0;     // bytes written and held
+  std::string held_;          // lines not yet written: the last held_.size() bytes of size_
 };
 
 }  // namespace sb::sweep

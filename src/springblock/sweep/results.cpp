@@ -8,18 +8,26 @@
 
 namespace sb::sweep {
 
-void take_numbers(SceneNumbers& numbers, int rep, const nlohmann::json& record) {
+nlohmann::json record_numbers(const nlohmann::json& record) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& o : observables()) out.push_back(record.at(o.name));
+  out.push_back(record.at("wall_s"));
+  out.push_back(record.at("contact_fraction"));
+  return out;
+}
+
+void take_numbers(SceneNumbers& numbers, int rep, const nlohmann::json& record_numbers) {
   const auto& obs = observables();
   if (numbers.values.empty()) numbers.values.resize(obs.size());
   for (std::size_t o = 0; o < obs.size(); ++o) {
     auto& v = numbers.values[o];
     if (static_cast<int>(v.size()) <= rep) v.resize(rep + 1, std::nan(""));
-    const auto& x = record.at(obs[o].name);
+    const auto& x = record_numbers.at(o);
     v[rep] = x.is_null() ? std::nan("") : x.get<double>();
   }
   if (static_cast<int>(numbers.wall_s.size()) <= rep) numbers.wall_s.resize(rep + 1, 0.0);
-  numbers.wall_s[rep] = record.at("wall_s").get<double>();
-  if (rep == 0) numbers.contact_fraction = record.at("contact_fraction");
+  numbers.wall_s[rep] = record_numbers.at(obs.size()).get<double>();
+  if (rep == 0) numbers.contact_fraction = record_numbers.at(obs.size() + 1);
 }
 
 nlohmann::json scene_statistics(const std::vector<SweepScene>& scenes, int k, const SceneNumbers& numbers) {

@@ -22,8 +22,12 @@ struct SceneNumbers {
   nlohmann::json contact_fraction;          // repetition 0's
 };
 
-// Keeps repetition `rep`'s numbers from its unit record.
-void take_numbers(SceneNumbers& numbers, int rep, const nlohmann::json& record);
+// The numbers of a unit record that its scene's statistics need, as a short JSON array (every
+// observable of observables(), null where undefined; wall_s; contact_fraction): what a worker
+// sends beside the record's text, so the coordinator parses nine numbers, not the record.
+nlohmann::json record_numbers(const nlohmann::json& record);
+// Keeps repetition `rep`'s numbers (record_numbers).
+void take_numbers(SceneNumbers& numbers, int rep, const nlohmann::json& record_numbers);
 
 // Scene k's line without its runs: scene, varied, the statistics of every observable
 // (mean/std/sem/n, null where undefined), reps, seed, method, dt, duration (the results schema's

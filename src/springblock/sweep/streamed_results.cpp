@@ -18,8 +18,8 @@ StreamedResults::StreamedResults(const std::vector<SweepScene>& scenes, std::str
       line_at_(scenes.size(), -1),
       rows_(scenes.size()) {}
 
-void StreamedResults::add(int scene, int rep, const nlohmann::json& record) {
-  take_numbers(open_[scene], rep, record);
+void StreamedResults::add(int scene, int rep, const nlohmann::json& record_numbers) {
+  take_numbers(open_[scene], rep, record_numbers);
   if (++in_.at(scene) < scenes_[scene].scene.reps) return;
   const auto line = scene_statistics(scenes_, scene, open_.at(scene));
   open_.erase(scene);

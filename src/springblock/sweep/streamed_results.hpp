@@ -28,8 +28,8 @@ class StreamedResults {
  public:
   StreamedResults(const std::vector<SweepScene>& scenes, std::string out);
 
-  // A finished unit's record, live or read from a resumed checkpoint (each unit once).
-  void add(int scene, int rep, const nlohmann::json& record);
+  // A finished unit's numbers (record_numbers), live or from a resumed checkpoint (each unit once).
+  void add(int scene, int rep, const nlohmann::json& record_numbers);
   // Starts OUT.partial afresh: `header` marked partial, then the scenes already complete.
   void start(nlohmann::json header);
   // Every unit is in: writes OUT (`header`, then every scene's line with its runs, records from

@@ -3,7 +3,9 @@
 # process, bit for bit, and so does springblock run --reps 8 on 2 ranks; a worker rank killed halfway is reported with the unit it lost, and
 # --resume (on another rank count) computes only the missing units, again with the same numbers;
 # a worker stopped by SIGTERM gives its unit back and the others finish the sweep;
-# a killed job leaves a valid partial results file (OUT.partial) and no OUT;
+# a killed job leaves a valid partial results file (OUT.partial) and no OUT; units dealt in
+# batches (--batch-ms, default 50) and one at a time (--batch-ms 0) give the same numbers, the
+# batches in far fewer messages than units;
 # a bad sweep file is refused once, with exit 2 and nothing written.
 # Usage: sweep_mpi.sh SPRINGBLOCK PYTHON MPIEXEC
 set -u
@@ -23,6 +25,26 @@ for np in 1 2 4; do
   grep -q "on $np rank(s)" "$dir/np$np.txt" || { echo "FAIL -np $np did not run on $np ranks"; fail=1; }
   "$py" "$here/compare_results.py" "$dir/one.jsonl" "$dir/np$np.jsonl" || { echo "FAIL -np $np differs"; fail=1; }
 done
+
+# Batches on and off: 20,000 tiny units (well under a millisecond each) on 2 ranks.
+printf '[base]\nN = 4\nduration = "1t0"\nreps = 20000\nseed = 1\n' >"$dir/tiny.toml"
+for ms in 50 0; do
+  mpi -np 2 "$sb" sweep "$dir/tiny.toml" --threads 1 --batch-ms $ms --out "$dir/b$ms.jsonl" >/dev/null 2>&1 ||
+    { echo "FAIL --batch-ms $ms"; fail=1; }
+done
+"$py" "$here/compare_results.py" "$dir/b50.jsonl" "$dir/b0.jsonl" || { echo "FAIL batches on and off differ"; fail=1; }
+"$py" - "$dir/b50.jsonl" "$dir/b0.jsonl" <<'PY' || fail=1
+import json, sys
+for path, batched in zip(sys.argv[1:], (True, False)):
+    lines = open(path).read().splitlines()
+    messages = json.loads(lines[0])["messages"]
+    remote = sum(1 for l in lines[1:] for r in json.loads(l)["runs"] if r["rank"] != 0)
+    print(f"{'batches' if batched else 'one unit a request'}: {remote} units run by rank 1 in {messages} messages")
+    if batched and not messages * 10 < remote:
+        sys.exit("FAIL batched dealing did not batch")
+    if not batched and messages < remote:
+        sys.exit("FAIL --batch-ms 0 sent fewer messages than units")
+PY
 
 # springblock run spreads its repetitions the same way: --reps 8 on 2 ranks = one process.
 opts=(--N 40 --reps 8 --seed 11 --duration 3t0 --pattern periodic:3,1 --velocity 5cm/s --json)
