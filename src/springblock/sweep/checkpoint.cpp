@@ -93,7 +93,7 @@ void Checkpoint::flush() {
 }
 
 void Checkpoint::assigned(const std::vector<int>& units, int rank) {
-  // One unit as a number, as earlier checkpoints hold it; a batch as a list.
+  // A single unit as a number, a batch as a list; load() reads both.
   const nlohmann::json ids = units.size() == 1 ? nlohmann::json(units[0]) : nlohmann::json(units);
   file_->hold(nlohmann::json{{"assigned", ids}, {"rank", rank}}.dump());
   unsynced_ = true;
