@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -191,6 +192,10 @@ std::unique_ptr<sweep::Checkpoint> open_checkpoint(const SweepOptions& o, const 
   shell::claim_output(out_path(o), "out");
   shell::claim_output(sweep::partial_path(out_path(o)), "out");
   if (!o.units.empty()) {
+    const std::string out = out_path(o);
+    for (const auto& taken : {out, sweep::partial_path(out), out + ".checkpoint"})
+      if (std::filesystem::absolute(o.units).lexically_normal() == std::filesystem::absolute(taken).lexically_normal())
+        throw InputError("units", "'" + o.units + "' is the sweep's own file " + taken + "; give another file");
     shell::claim_output(o.units, "units");
     shell::claim_output(sweep::partial_path(o.units), "units");
   }

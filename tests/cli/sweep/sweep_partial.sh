@@ -4,7 +4,8 @@
 # sweep killed with SIGKILL halfway leaves a valid OUT.partial and no OUT; --resume (on another
 # thread count) picks up from the checkpoint and the partial file and gives results equal, bit for
 # bit, to an uninterrupted sweep's; the partial lines' statistics are the complete file's; --units
-# streams every unit's record once; SIGINT exits 130 naming the partial file.
+# streams every unit's record once (and may not name one of the sweep's own files); SIGINT exits
+# 130 naming the partial file.
 # Usage: sweep_partial.sh SPRINGBLOCK PYTHON
 set -u
 sb=$1 py=$2
@@ -108,6 +109,12 @@ rc=$?
 grep -q "complete so far are in .*r.jsonl.partial (marked partial)" "$dir/err" ||
   { echo "FAIL the interrupt message does not name the partial file"; cat "$dir/err"; fail=1; }
 tool sweep_results "$dir/r.jsonl" | grep -q "^partial: " || { echo "FAIL no valid partial file after SIGINT"; fail=1; }
+
+# --units naming one of the sweep's own files: exit 2, nothing written.
+"$sb" sweep "$dir/p.toml" --out "$dir/same.jsonl" --units "$dir/same.jsonl" >/dev/null 2>"$dir/err"
+[ $? -eq 2 ] && grep -q "invalid units: .* is the sweep's own file" "$dir/err" ||
+  { echo "FAIL --units equal to --out was not refused"; cat "$dir/err"; fail=1; }
+ls "$dir"/same.jsonl* >/dev/null 2>&1 && { echo "FAIL a refused sweep left a file"; fail=1; }
 
 [ $fail -eq 0 ] && echo "partial results valid while running and after a kill; resumed results identical"
 exit $fail
