@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -19,17 +18,12 @@
 #include "springblock/sweep/streamed_results.hpp"
 #include "springblock/sweep/units.hpp"
 #include "scheduler_choice.hpp"
+#include "sweep_files.hpp"
 
 namespace sb::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string out_path(const SweepOptions& o) {
-  if (!o.out.empty()) return o.out;
-  const auto dot = o.file.rfind('.');
-  return (dot == std::string::npos ? o.file : o.file.substr(0, dot)) + ".results.jsonl";
-}
 
 std::string unit_name(const std::vector<sweep::Unit>& units, int id) {
   return std::to_string(id) + " (scene " + std::to_string(units[id].scene) + " rep " + std::to_string(units[id].rep) + ")";
@@ -182,50 +176,6 @@ int finish(const SweepOptions& o, const std::vector<sweep::SweepScene>& scenes, 
               l.checkpoint.done_count() - l.computed, s.ranks(), s.threads(),
               std::chrono::duration<double>(Clock::now() - l.start).count(), out_path(o).c_str());
   return shell::kOk;
-}
-
-// The checkpoint, after every output path is claimed (bad input leaves no file); the records of a
-// resumed one go to `results` as they are read.
-std::unique_ptr<sweep::Checkpoint> open_checkpoint(const SweepOptions& o, const std::vector<sweep::SweepScene>& scenes,
-                                                   const std::vector<sweep::Unit>& units,
-                                                   sweep::StreamedResults& results) {
-  shell::claim_output(out_path(o), "out");
-  shell::claim_output(sweep::partial_path(out_path(o)), "out");
-  if (!o.units.empty()) {
-    const std::string out = out_path(o);
-    for (const auto& taken : {out, sweep::partial_path(out), out + ".checkpoint"})
-      if (std::filesystem::absolute(o.units).lexically_normal() == std::filesystem::absolute(taken).lexically_normal())
-        throw InputError("units", "'" + o.units + "' is the sweep's own file " + taken + "; give another file");
-    shell::claim_output(o.units, "units");
-    shell::claim_output(sweep::partial_path(o.units), "units");
-  }
-  auto resumed = [&](const nlohmann::json& record) {
-    const auto& u = units.at(record.at("unit").get<int>());
-    results.add(u.scene, u.rep, sweep::record_numbers(record));
-  };
-  return std::make_unique<sweep::Checkpoint>(out_path(o) + ".checkpoint", sweep::fingerprint(scenes),
-                                             static_cast<int>(units.size()), o.resume, resumed);
-}
-
-// The partial results' header: what the sweep is, before any of its numbers.
-nlohmann::json partial_header(const SweepOptions& o, const std::vector<sweep::SweepScene>& scenes,
-                              const std::vector<sweep::Unit>& units, const std::string& command_line) {
-  return {{"kind", "sweep"},
-          {"file", o.file},
-          {"scenes", scenes.size()},
-          {"units", units.size()},
-          {"fingerprint", sweep::fingerprint(scenes)},
-          {"provenance", provenance(command_line)}};
-}
-
-// UNITS.partial: the records of the units already done (a resumed sweep's, in unit order), then
-// each unit's as it finishes; renamed to UNITS when the sweep completes.
-std::unique_ptr<sweep::LineFile> start_unit_records(const std::string& path, const sweep::Checkpoint& cp) {
-  auto file = std::make_unique<sweep::LineFile>(sweep::partial_path(path) + ".tmp." + std::to_string(::getpid()));
-  for (int id = 0; cp.done_count() > 0 && id < cp.units(); ++id)
-    if (cp.done(id)) file->append(cp.record_text(id));
-  file->rename_to(sweep::partial_path(path));
-  return file;
 }
 
 }  // namespace
