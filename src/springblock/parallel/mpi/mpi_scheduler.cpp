@@ -131,8 +131,8 @@ bool MpiScheduler::answer_one(Dealer& dealer, int& open_ranks, int all_slots) {
   message_s_ += now_s() - t0;  // receiving and decoding; the hooks (checkpoint) are timed by their owner
   if (msg.contains("error"))
     throw std::runtime_error("rank " + std::to_string(src) + ": " + msg.at("error").get<std::string>());
-  for (auto& d : msg.value("done", nlohmann::json::array()))
-    dealer.finished(d.at("id").get<int>(), src, std::move(d.at("record")));
+  if (auto done = msg.find("done"); done != msg.end())  // found, not value(): no copy of the batch
+    for (auto& d : *done) dealer.finished(d.at("id").get<int>(), src, std::move(d.at("record")));
   for (const auto& id : msg.value("returned", nlohmann::json::array())) {
     dealer.give_back(id.get<int>());
     dealer.notes.push_back("rank " + std::to_string(src) + " was interrupted and gave back unit " +
