@@ -49,19 +49,29 @@ Outcome Dealer::outcome() const {
   return o;
 }
 
-void serve_pool(UnitPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait) {
+namespace {
+
+void fill(UnitPool& pool, Dealer& dealer, int rank) {
   while (pool.has_room()) {
     auto id = dealer.next(rank);
     if (!id) break;
     pool.submit(*id);
   }
-  dealer.settle();  // the assignments are on record before the units can finish
-  if (pool.busy() == 0) return;
-  if (auto d = pool.collect(wait)) {
-    if (d->error) std::rethrow_exception(d->error);
-    dealer.finished(d->id, rank, std::move(d->result));
-    dealer.settle();
+}
+
+}  // namespace
+
+void serve_pool(UnitPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait) {
+  fill(pool, dealer, rank);
+  if (pool.busy() > 0) {
+    if (auto d = pool.collect(wait)) {
+      if (d->error) std::rethrow_exception(d->error);
+      dealer.finished(d->id, rank, std::move(d->result));
+      fill(pool, dealer, rank);  // the freed thread's next unit
+    }
   }
+  // A finished unit's record and the assignment of the unit that replaced it in one write.
+  dealer.settle();
 }
 
 }  // namespace sb::parallel
