@@ -7,8 +7,9 @@
 
 namespace sb::app {
 
-// Starts MPI when it chooses it. Throws InputError when mpirun started several copies of a build
+// Starts MPI when it chooses it; `batch_s` is the MPI workers' target time per batch of units
+// (0: one unit per request; threads in one process need no batches). Throws InputError when mpirun started several copies of a build
 // without MPI (each would run everything).
-std::unique_ptr<parallel::Scheduler> make_scheduler(int threads);
+std::unique_ptr<parallel::Scheduler> make_scheduler(int threads, double batch_s = 0.05);
 
 }  // namespace sb::app

@@ -15,20 +15,15 @@
 #include "springblock/errors.hpp"
 #include "springblock/io.hpp"
 #include "springblock/sweep/checkpoint.hpp"
-#include "springblock/sweep/results.hpp"
+#include "springblock/sweep/streamed_results.hpp"
 #include "springblock/sweep/units.hpp"
 #include "scheduler_choice.hpp"
+#include "sweep_files.hpp"
 
 namespace sb::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string out_path(const SweepOptions& o) {
-  if (!o.out.empty()) return o.out;
-  const auto dot = o.file.rfind('.');
-  return (dot == std::string::npos ? o.file : o.file.substr(0, dot)) + ".results.jsonl";
-}
 
 std::string unit_name(const std::vector<sweep::Unit>& units, int id) {
   return std::to_string(id) + " (scene " + std::to_string(units[id].scene) + " rep " + std::to_string(units[id].rep) + ")";
@@ -54,15 +49,21 @@ struct Flight : parallel::InFlight {
   int unit_id() const { return id; }
 };
 
-// What the coordinator keeps while units come in: the checkpoint, counts for the progress line
-// and the cost of writing the checkpoint.
+// What the coordinator keeps while units come in: the checkpoint, the results as scenes complete,
+// the per-unit records file if asked, counts for the progress line and the cost of writing the
+// checkpoint. Nothing here grows with a unit's record: per unit only a few bytes (its scene,
+// whether it is done, where its record starts in the checkpoint).
 struct Ledger {
   sweep::Checkpoint& checkpoint;
-  std::vector<double> cost;
+  sweep::StreamedResults& results;
+  const std::vector<sweep::Unit>& units;
+  std::vector<double> scene_cost;  // sweep::unit_cost of each scene's units
+  std::unique_ptr<sweep::LineFile> unit_records;
   double cost_total = 0, cost_before = 0, cost_now = 0;
   int computed = 0;
   double checkpoint_s = 0;
   Clock::time_point start = Clock::now();
+  double cost(int id) const { return scene_cost[units[id].scene]; }
 };
 
 void show_progress(const Ledger& l, int units_total, int ranks, int threads) {
@@ -70,7 +71,7 @@ void show_progress(const Ledger& l, int units_total, int ranks, int threads) {
   const double fraction = (l.cost_before + l.cost_now) / l.cost_total;
   char text[200];
   std::snprintf(text, sizeof text, "sweep: %5.1f%% (%d of %d units, %d ranks x %d threads), %s elapsed, ETA %s",
-                100 * fraction, static_cast<int>(l.checkpoint.finished().size()), units_total, ranks, threads,
+                100 * fraction, l.checkpoint.done_count(), units_total, ranks, threads,
                 shell::format_seconds(elapsed).c_str(),
                 l.cost_now > 0 ? shell::format_seconds(elapsed * (l.cost_total - l.cost_before - l.cost_now) / l.cost_now).c_str()
                                : "?");
@@ -79,13 +80,25 @@ void show_progress(const Ledger& l, int units_total, int ranks, int threads) {
 
 parallel::Hooks hooks(Ledger& l, bool progress, int units_total, const parallel::Scheduler& s) {
   parallel::Hooks h;
-  h.assigned = [&l](int id, int rank) { l.checkpoint.assigned(id, rank); };
-  h.finished = [&l](int id, int rank, nlohmann::json record) {
-    record["rank"] = rank;
+  h.assigned = [&l](const std::vector<int>& ids, int rank) {
     const auto t0 = Clock::now();
-    l.checkpoint.finished(record);
+    l.checkpoint.assigned(ids, rank);
     l.checkpoint_s += std::chrono::duration<double>(Clock::now() - t0).count();
-    l.cost_now += l.cost[id];
+  };
+  h.settled = [&l] {
+    const auto t0 = Clock::now();
+    l.checkpoint.flush();
+    l.checkpoint_s += std::chrono::duration<double>(Clock::now() - t0).count();
+    if (l.unit_records) l.unit_records->flush();
+  };
+  h.finished = [&l](int id, int, nlohmann::json result) {
+    const auto& line = result.at("record").get_ref<const std::string&>();
+    const auto t0 = Clock::now();
+    l.checkpoint.finished(id, line);
+    l.checkpoint_s += std::chrono::duration<double>(Clock::now() - t0).count();
+    if (l.unit_records) l.unit_records->hold(line);
+    l.results.add(l.units[id].scene, l.units[id].rep, result.at("numbers"));
+    l.cost_now += l.cost(id);
     ++l.computed;
   };
   if (progress) h.tick = [&l, units_total, &s] { show_progress(l, units_total, s.ranks(), s.threads()); };
@@ -96,15 +109,15 @@ parallel::Hooks hooks(Ledger& l, bool progress, int units_total, const parallel:
 // last; equal costs keep their order.
 std::vector<int> pending_units(const Ledger& l) {
   std::vector<int> ids;
-  for (int id = 0; id < static_cast<int>(l.cost.size()); ++id)
-    if (!l.checkpoint.finished().count(id)) ids.push_back(id);
-  std::stable_sort(ids.begin(), ids.end(), [&](int a, int b) { return l.cost[a] > l.cost[b]; });
+  for (int id = 0; id < static_cast<int>(l.units.size()); ++id)
+    if (!l.checkpoint.done(id)) ids.push_back(id);
+  std::stable_sort(ids.begin(), ids.end(), [&](int a, int b) { return l.cost(a) > l.cost(b); });
   return ids;
 }
 
 void report_resume(const sweep::Checkpoint& cp, const std::vector<sweep::Unit>& units, int pending) {
   std::fprintf(stderr, "springblock: resuming from %s: %d of %d units already done, %d to compute\n",
-               cp.path().c_str(), static_cast<int>(cp.finished().size()), static_cast<int>(units.size()), pending);
+               cp.path().c_str(), cp.done_count(), static_cast<int>(units.size()), pending);
   if (!cp.lost().empty()) {
     std::vector<Lost> lost;
     for (auto& u : cp.lost()) lost.push_back({u});
@@ -121,10 +134,11 @@ int interrupted(const parallel::Outcome& o, Ledger& l, const std::vector<sweep::
   for (auto& f : o.unfinished) flight.push_back({f});
   std::fprintf(stderr,
                "springblock: interrupted; %d of %d units are finished and checkpointed in %s. Units in flight "
-               "(lost, recomputed on resume): %s. Run the same command with --resume to compute the rest. No "
-               "results file was written.\n",
-               static_cast<int>(l.checkpoint.finished().size()), static_cast<int>(units.size()),
-               l.checkpoint.path().c_str(), flight.empty() ? "none" : by_rank(flight, units).c_str());
+               "(lost, recomputed on resume): %s. Run the same command with --resume to compute the rest. The "
+               "%d scene(s) complete so far are in %s (marked partial).\n",
+               l.checkpoint.done_count(), static_cast<int>(units.size()), l.checkpoint.path().c_str(),
+               flight.empty() ? "none" : by_rank(flight, units).c_str(), l.results.scenes_complete(),
+               l.results.partial().c_str());
   std::fflush(stderr);
   s.abort(shell::kInterrupted);  // the other ranks stop too (returns only without MPI)
   return shell::kInterrupted;
@@ -135,9 +149,9 @@ nlohmann::json header(const SweepOptions& o, const std::vector<sweep::SweepScene
   return {{"kind", "sweep"},
           {"file", o.file},
           {"scenes", scenes.size()},
-          {"units", l.cost.size()},
+          {"units", l.units.size()},
           {"computed_units", l.computed},
-          {"resumed_units", static_cast<int>(l.checkpoint.finished().size()) - l.computed},
+          {"resumed_units", l.checkpoint.done_count() - l.computed},
           {"ranks", s.ranks()},
           {"threads_per_rank", s.threads()},
           {"wall_s", std::chrono::duration<double>(Clock::now() - l.start).count()},
@@ -151,20 +165,15 @@ int finish(const SweepOptions& o, const std::vector<sweep::SweepScene>& scenes, 
            const parallel::Outcome& out, const parallel::Scheduler& s, const std::string& command_line) {
   shell::end_progress_line();
   for (auto& note : out.notes) std::fprintf(stderr, "springblock: %s\n", note.c_str());
-  const auto& records = l.checkpoint.finished();
-  shell::write_output(out_path(o), sweep::results_jsonl(scenes, records, header(o, scenes, l, out, s, command_line)));
+  l.checkpoint.flush();
+  l.results.complete(header(o, scenes, l, out, s, command_line), l.checkpoint);
+  if (l.unit_records) l.unit_records->rename_to(o.units);
   l.checkpoint.remove();  // the results hold every unit now
-  std::vector<nlohmann::json> lines;
-  int first = 0;
-  for (int k = 0; k < static_cast<int>(scenes.size()); ++k) {
-    lines.push_back(sweep::scene_line(scenes, k, records, first));
-    first += scenes[k].scene.reps;
-  }
-  std::cout << sweep::summary_table(lines);
+  std::cout << l.results.summary();
   std::printf("%d scenes, %d units (%d computed now, %d from the checkpoint) on %d rank(s) x %d thread(s) in %.2f s; "
               "results in %s\n",
-              static_cast<int>(scenes.size()), static_cast<int>(l.cost.size()), l.computed,
-              static_cast<int>(records.size()) - l.computed, s.ranks(), s.threads(),
+              static_cast<int>(scenes.size()), static_cast<int>(l.units.size()), l.computed,
+              l.checkpoint.done_count() - l.computed, s.ranks(), s.threads(),
               std::chrono::duration<double>(Clock::now() - l.start).count(), out_path(o).c_str());
   return shell::kOk;
 }
@@ -172,11 +181,13 @@ int finish(const SweepOptions& o, const std::vector<sweep::SweepScene>& scenes, 
 }  // namespace
 
 int run_sweep(const SweepOptions& o, const std::string& command_line) {
-  auto sched = make_scheduler(o.threads);
+  auto sched = make_scheduler(o.threads, o.batch_ms / 1000);
   const bool lead = sched->coordinator();
   std::vector<sweep::SweepScene> scenes;
+  std::vector<sweep::Unit> units;
   try {
     scenes = sweep::expand(sweep::read_spec(o.file));  // on every rank: a unit id means the same there
+    units = sweep::make_units(scenes);
   } catch (const InputError&) {
     if (lead) throw;
     // Rank 0 found the same, says so and exits with kBadInput, which mpirun then returns. A
@@ -184,13 +195,11 @@ int run_sweep(const SweepOptions& o, const std::string& command_line) {
     // printed a word (seen under load in cli_sweep_mpi): it leaves quietly instead.
     return 0;
   }
-  const auto units = sweep::make_units(scenes);
+  sweep::StreamedResults results(scenes, out_path(o));
   std::unique_ptr<sweep::Checkpoint> cp;
   std::exception_ptr refused;
   if (lead) try {
-      shell::claim_output(out_path(o), "out");
-      cp = std::make_unique<sweep::Checkpoint>(out_path(o) + ".checkpoint", sweep::fingerprint(scenes),
-                                               static_cast<int>(units.size()), o.resume);
+      cp = open_checkpoint(o, scenes, units, results);
     } catch (...) {
       refused = std::current_exception();
     }
@@ -199,15 +208,26 @@ int run_sweep(const SweepOptions& o, const std::string& command_line) {
     return lead ? shell::kBadInput : 0;  // a worker leaves quietly, as above
   }
   const auto* interrupt = shell::catch_interrupts();
-  auto run_unit = [&](int id, const std::atomic<bool>* stop) { return sweep::run_unit(scenes, units, id, stop); };
+  // A unit's result travels as its record's text (written to the checkpoint as it is) and the
+  // few numbers its scene's statistics need: the coordinator parses those, not the record.
+  auto run_unit = [&, rank = sched->rank()](int id, const std::atomic<bool>* stop) -> nlohmann::json {
+    auto record = sweep::run_unit(scenes, units, id, stop);
+    if (record.is_null()) return record;
+    record["rank"] = rank;
+    return {{"record", record.dump()}, {"numbers", sweep::record_numbers(record)}};
+  };
   if (!lead) {
     sched->run({}, run_unit, {}, interrupt);
     return shell::kOk;
   }
-  Ledger l{*cp, {}};
-  for (const auto& u : units) l.cost.push_back(sweep::unit_cost(scenes[u.scene].scene));
-  for (double c : l.cost) l.cost_total += c;
-  for (auto& [id, rec] : cp->finished()) l.cost_before += l.cost[id];
+  results.start(partial_header(o, scenes, units, command_line));
+  Ledger l{*cp, results, units, {}, nullptr};
+  if (!o.units.empty()) l.unit_records = start_unit_records(o.units, *cp);
+  for (const auto& s : scenes) l.scene_cost.push_back(sweep::unit_cost(s.scene));
+  for (int id = 0; id < static_cast<int>(units.size()); ++id) {
+    l.cost_total += l.cost(id);
+    if (cp->done(id)) l.cost_before += l.cost(id);
+  }
   const auto ids = pending_units(l);
   if (o.resume) report_resume(*cp, units, static_cast<int>(ids.size()));
   const bool progress = o.progress || ::isatty(STDERR_FILENO);

@@ -6,8 +6,9 @@
 namespace sb::app {
 
 struct SweepOptions {
-  std::string file, out;
+  std::string file, out, units;  // units: the per-unit records file, if asked
   int threads = 0;
+  double batch_ms = 50;  // under MPI: a worker's target time per batch of units; 0 = one unit per request
   bool resume = false, progress = false;
 };
 

@@ -140,23 +140,29 @@ TEST(SweepCheckpoint, ResumeKeepsFinishedUnitsDropsACutLineAndReportsLostOnes) {
   const std::string path = (dir.path / "c.checkpoint").string();
   {
     sb::sweep::Checkpoint cp(path, "abc", 4, false);
-    cp.assigned(0, 0);
-    cp.assigned(1, 1);
+    cp.assigned({0}, 0);
+    cp.assigned({1, 3}, 1);
     cp.finished({{"unit", 0}, {"x", 0.1}});
   }
   std::ofstream(path, std::ios::app) << R"({"unit": 1, "x")";  // a kill mid-write
   EXPECT_THROW(sb::sweep::Checkpoint(path, "abc", 4, false), sb::InputError);  // no --resume
   EXPECT_THROW(sb::sweep::Checkpoint(path, "abd", 4, true), sb::InputError);   // another sweep
-  sb::sweep::Checkpoint cp(path, "abc", 4, true);
-  ASSERT_EQ(cp.finished().size(), 1u);
-  EXPECT_EQ(cp.finished().at(0).at("x").get<double>(), 0.1);
-  ASSERT_EQ(cp.lost().size(), 1u);
+  std::vector<int> resumed;
+  sb::sweep::Checkpoint cp(path, "abc", 4, true, [&](const nlohmann::json& r) { resumed.push_back(r.at("unit")); });
+  ASSERT_EQ(cp.done_count(), 1);
+  EXPECT_TRUE(cp.done(0));
+  EXPECT_FALSE(cp.done(1));
+  EXPECT_EQ(resumed, std::vector<int>{0});
+  EXPECT_EQ(nlohmann::json::parse(cp.record_text(0)).at("x").get<double>(), 0.1);
+  ASSERT_EQ(cp.lost().size(), 2u);  // 1 and 3, handed out together
   EXPECT_EQ(cp.lost()[0].unit, 1);
   EXPECT_EQ(cp.lost()[0].rank, 1);
+  EXPECT_EQ(cp.lost()[1].unit, 3);
   cp.finished({{"unit", 2}, {"x", 0.2}});
   cp.sync();
   sb::sweep::Checkpoint again(path, "abc", 4, true);  // the cut line is gone, appends parse
-  EXPECT_EQ(again.finished().size(), 2u);
+  EXPECT_EQ(again.done_count(), 2);
+  EXPECT_EQ(again.record_text(2), R"({"unit":2,"x":0.2})");
 }
 
 TEST(SweepUnits, ARecordHoldsTheRepetitionsNumbersExactly) {

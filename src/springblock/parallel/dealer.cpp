@@ -6,12 +6,21 @@ Dealer::Dealer(const std::vector<int>& ids, const Hooks& hooks, const std::atomi
     : queue_(ids.begin(), ids.end()), hooks_(hooks), interrupt_(interrupt) {}
 
 std::optional<int> Dealer::next(int rank) {
-  if (queue_.empty() || interrupted()) return std::nullopt;
-  const int id = queue_.front();
-  queue_.pop_front();
-  holder_[id] = rank;
-  if (hooks_.assigned) hooks_.assigned(id, rank);
-  return id;
+  const auto ids = next_batch(rank, 1);
+  if (ids.empty()) return std::nullopt;
+  return ids[0];
+}
+
+std::vector<int> Dealer::next_batch(int rank, int count) {
+  std::vector<int> ids;
+  if (interrupted()) return ids;
+  while (static_cast<int>(ids.size()) < count && !queue_.empty()) {
+    ids.push_back(queue_.front());
+    queue_.pop_front();
+    holder_[ids.back()] = rank;
+  }
+  if (!ids.empty() && hooks_.assigned) hooks_.assigned(ids, rank);
+  return ids;
 }
 
 void Dealer::finished(int id, int rank, nlohmann::json record) {
@@ -40,17 +49,29 @@ Outcome Dealer::outcome() const {
   return o;
 }
 
-void serve_pool(UnitPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait) {
+namespace {
+
+void fill(UnitPool& pool, Dealer& dealer, int rank) {
   while (pool.has_room()) {
     auto id = dealer.next(rank);
     if (!id) break;
     pool.submit(*id);
   }
-  if (pool.busy() == 0) return;
-  if (auto d = pool.collect(wait)) {
-    if (d->error) std::rethrow_exception(d->error);
-    dealer.finished(d->id, rank, std::move(d->result));
+}
+
+}  // namespace
+
+void serve_pool(UnitPool& pool, Dealer& dealer, int rank, std::chrono::milliseconds wait) {
+  fill(pool, dealer, rank);
+  if (pool.busy() > 0) {
+    if (auto d = pool.collect(wait)) {
+      if (d->error) std::rethrow_exception(d->error);
+      dealer.finished(d->id, rank, std::move(d->result));
+      fill(pool, dealer, rank);  // the freed thread's next unit
+    }
   }
+  // A finished unit's record and the assignment of the unit that replaced it in one write.
+  dealer.settle();
 }
 
 }  // namespace sb::parallel

@@ -22,6 +22,9 @@ class Dealer {
 
   // The next unit for `rank`, or nothing when none is left or the run is interrupted.
   std::optional<int> next(int rank);
+  // The next `count` units (fewer when fewer are left; none when interrupted) for `rank`, from
+  // the front of the queue, so the dearest still go first; logged as one assignment.
+  std::vector<int> next_batch(int rank, int count);
   // A unit's result came back; a null record (cut short by an interrupt) stays unfinished.
   void finished(int id, int rank, nlohmann::json record);
   // A worker gave a unit back unrun (it was interrupted): another rank will run it.
@@ -29,7 +32,11 @@ class Dealer {
   bool interrupted() const { return interrupt_ && interrupt_->load(); }
   bool queue_empty() const { return queue_.empty(); }
   int in_flight() const { return static_cast<int>(holder_.size()); }
+  int queued() const { return static_cast<int>(queue_.size()); }
   void tick();  // calls hooks.tick at most every 0.2 s
+  void settle() const {  // calls hooks.settled
+    if (hooks_.settled) hooks_.settled();
+  }
   Outcome outcome() const;
   std::vector<std::string> notes;
 

@@ -1,8 +1,9 @@
 #pragma once
 // Who runs which work unit. A scheduler hands units to threads (ThreadScheduler: one process)
 // or to ranks and their threads (the MPI scheduler, mpi/, built with SPRINGBLOCK_MPI), dealing
-// them out one at a time from a queue on the coordinator (rank 0) as workers free up, so units
-// whose run times differ 100x leave nobody idle. Results come back to the coordinator, which
+// them out from a queue on the coordinator (rank 0) as workers free up (one at a time to its own
+// threads, in batches sized by their measured cost to other ranks), so units whose run times
+// differ 100x leave nobody idle. Results come back to the coordinator, which
 // alone calls the hooks (checkpoint, progress): in finish order, which is why a result must
 // never depend on it.
 #include <atomic>
@@ -17,9 +18,12 @@ namespace sb::parallel {
 using UnitRunner = std::function<nlohmann::json(int id, const std::atomic<bool>* interrupt)>;
 
 struct Hooks {
-  std::function<void(int id, int rank)> assigned;                          // unit handed out
+  std::function<void(const std::vector<int>& ids, int rank)> assigned;     // units handed out together
   std::function<void(int id, int rank, nlohmann::json record)> finished;  // its record is in
   std::function<void()> tick;                                              // about 5 times a second
+  // What one message (or one of the coordinator's own threads) brought is in: the place to write
+  // out together what the calls above held.
+  std::function<void()> settled;
 };
 
 struct InFlight {

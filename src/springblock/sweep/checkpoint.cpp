@@ -1,14 +1,10 @@
 #include "springblock/sweep/checkpoint.hpp"
 
-#include <fcntl.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
 
 #include "springblock/errors.hpp"
 #include "springblock/io.hpp"
@@ -16,7 +12,7 @@
 namespace sb::sweep {
 namespace {
 
-nlohmann::json header(const std::string& fingerprint, int units) {
+nlohmann::json checkpoint_header(const std::string& fingerprint, int units) {
   return {{"checkpoint", "springblock sweep"}, {"fingerprint", fingerprint}, {"units", units}};
 }
 
@@ -24,87 +20,95 @@ double steady_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-std::vector<std::string> read_lines(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
 }  // namespace
 
-Checkpoint::Checkpoint(std::string path, const std::string& fingerprint, int units, bool resume)
-    : path_(std::move(path)) {
+Checkpoint::Checkpoint(std::string path, const std::string& fingerprint, int units, bool resume,
+                       const ResumedRecord& resumed)
+    : path_(std::move(path)), offset_(units, -1) {
   const bool exists = std::filesystem::exists(path_);
   if (exists && !resume)
     throw InputError("resume", "checkpoint '" + path_ +
                                    "' exists from an unfinished run of this sweep: add --resume to finish it, "
                                    "or delete it to start over");
-  if (exists) load(fingerprint, units);
-  std::string text = header(fingerprint, units).dump() + "\n";
-  for (auto& [unit, record] : finished_) text += record.dump() + "\n";
   check_writable(path_, "checkpoint");
-  write_file_atomic(path_, text);
-  fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-  if (fd_ < 0) throw std::runtime_error("cannot open checkpoint '" + path_ + "': " + std::strerror(errno));
+  // Written beside the old file and renamed over it once whole: a failure leaves the old one.
+  auto clean = std::make_unique<LineFile>(path_ + ".tmp." + std::to_string(::getpid()));
+  try {
+    clean->append(checkpoint_header(fingerprint, units).dump());
+    if (exists) load(fingerprint, units, *clean, resumed);
+    clean->rename_to(path_);
+  } catch (...) {
+    clean->remove();
+    throw;
+  }
+  file_ = std::move(clean);
 }
 
-Checkpoint::~Checkpoint() {
-  if (fd_ >= 0) ::close(fd_);
-}
-
-void Checkpoint::load(const std::string& fingerprint, int units) {
-  const auto lines = read_lines(path_);
-  std::map<int, int> handed_to;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
+void Checkpoint::load(const std::string& fingerprint, int units, LineFile& clean, const ResumedRecord& resumed) {
+  std::ifstream in(path_);
+  std::vector<int> handed_to(units, -1);  // unit -> rank it was last handed to
+  std::string line, next;
+  bool more = static_cast<bool>(std::getline(in, line));
+  for (int i = 0; more; ++i, line.swap(next)) {
+    more = static_cast<bool>(std::getline(in, next));
     nlohmann::json j;
     try {
-      j = nlohmann::json::parse(lines[i]);
+      j = nlohmann::json::parse(line);
     } catch (const nlohmann::json::exception&) {
-      if (i + 1 == lines.size()) break;  // cut short by a kill while it was written: that unit reruns
+      if (!more) break;  // cut short by a kill while it was written: that unit reruns
       throw InputError("resume", "checkpoint '" + path_ + "' line " + std::to_string(i + 1) + " is corrupt");
     }
     if (i == 0) {
-      if (j != header(fingerprint, units))
+      if (j != checkpoint_header(fingerprint, units))
         throw InputError("resume", "checkpoint '" + path_ + "' belongs to another sweep (other scenes or "
                                    "repetitions); delete it to start this one over");
     } else if (j.contains("assigned")) {
-      handed_to[j.at("assigned").get<int>()] = j.at("rank").get<int>();
+      const auto& ids = j.at("assigned");
+      for (const auto& id : ids.is_array() ? ids : nlohmann::json::array({ids}))
+        handed_to.at(id.get<int>()) = j.at("rank").get<int>();
     } else {
-      finished_[j.at("unit").get<int>()] = j;
+      const int unit = j.at("unit").get<int>();
+      if (offset_.at(unit) >= 0) continue;
+      offset_[unit] = clean.append(line);
+      ++done_count_;
+      if (resumed) resumed(j);
     }
   }
-  for (auto& [unit, rank] : handed_to)
-    if (!finished_.count(unit)) lost_.push_back({unit, rank});
+  for (int unit = 0; unit < units; ++unit)
+    if (handed_to[unit] >= 0 && !done(unit)) lost_.push_back({unit, handed_to[unit]});
 }
 
-void Checkpoint::append(const std::string& line, bool sync_due) {
-  const std::string text = line + "\n";
-  // One write per line, O_APPEND: a kill leaves at most the last line cut short.
-  if (::write(fd_, text.data(), text.size()) != static_cast<ssize_t>(text.size()))
-    throw std::runtime_error("cannot append to checkpoint '" + path_ + "': " + std::strerror(errno));
-  if (sync_due && steady_s() - last_sync_s_ >= 0.1) sync();
-}
+std::string Checkpoint::record_text(int unit) const { return file_->line_at(offset_.at(unit)); }
 
 void Checkpoint::sync() {
-  if (fd_ >= 0 && ::fsync(fd_) != 0)
-    throw std::runtime_error("cannot sync checkpoint '" + path_ + "': " + std::strerror(errno));
+  if (file_) file_->sync();
   last_sync_s_ = steady_s();
+  unsynced_ = false;
 }
 
-void Checkpoint::assigned(int unit, int rank) {
-  append(nlohmann::json{{"assigned", unit}, {"rank", rank}}.dump(), false);
+void Checkpoint::flush() {
+  if (!file_) return;
+  file_->flush();
+  if (unsynced_ && steady_s() - last_sync_s_ >= 0.1) sync();
 }
 
-void Checkpoint::finished(const nlohmann::json& record) {
-  append(record.dump(), true);
-  finished_[record.at("unit").get<int>()] = record;
+void Checkpoint::assigned(const std::vector<int>& units, int rank) {
+  // A single unit as a number, a batch as a list; load() reads both.
+  const nlohmann::json ids = units.size() == 1 ? nlohmann::json(units[0]) : nlohmann::json(units);
+  file_->hold(nlohmann::json{{"assigned", ids}, {"rank", rank}}.dump());
+  unsynced_ = true;
+}
+
+void Checkpoint::finished(int unit, const std::string& record_text) {
+  const std::int64_t at = file_->hold(record_text);
+  unsynced_ = true;
+  if (offset_.at(unit) < 0) ++done_count_;
+  offset_[unit] = at;
 }
 
 void Checkpoint::remove() {
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
-  std::filesystem::remove(path_);
+  if (file_) file_->remove();
+  file_.reset();
 }
 
 }  // namespace sb::sweep

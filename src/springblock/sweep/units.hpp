@@ -16,6 +16,7 @@ struct Unit {
   int rep = 0;
 };
 
+// Throws InputError("reps") when the units would not fit an int.
 std::vector<Unit> make_units(const std::vector<SweepScene>& scenes);
 
 // Runs unit `id` and returns its record: unit, scene, rep, seed, the observables (null where

@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
-# springblock sweep under mpirun: 2 ranks and 4 oversubscribed ranks give the numbers of one
+# springblock sweep under mpirun: 1, 2 and 4 oversubscribed ranks give the numbers of one
 # process, bit for bit, and so does springblock run --reps 8 on 2 ranks; a worker rank killed halfway is reported with the unit it lost, and
 # --resume (on another rank count) computes only the missing units, again with the same numbers;
 # a worker stopped by SIGTERM gives its unit back and the others finish the sweep;
+# a killed job leaves a valid partial results file (OUT.partial) and no OUT; units dealt in
+# batches (--batch-ms, default 50) and one at a time (--batch-ms 0) give the same numbers, the
+# batches in far fewer messages than units;
 # a bad sweep file is refused once, with exit 2 and nothing written.
 # Usage: sweep_mpi.sh SPRINGBLOCK PYTHON MPIEXEC
 set -u
 sb=$1 py=$2 mpirun=$3
 here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../../.." && pwd)
 example="$here/../../../examples/sweep.toml"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -15,12 +19,32 @@ fail=0
 mpi() { "$mpirun" --oversubscribe --allow-run-as-root "$@"; }
 
 "$sb" sweep "$example" --threads 2 --out "$dir/one.jsonl" >/dev/null 2>&1 || { echo "FAIL one process"; exit 1; }
-for np in 2 4; do
+for np in 1 2 4; do
   mpi -np $np "$sb" sweep "$example" --threads 1 --out "$dir/np$np.jsonl" >"$dir/np$np.txt" 2>&1 ||
     { echo "FAIL mpirun -np $np"; cat "$dir/np$np.txt"; fail=1; continue; }
   grep -q "on $np rank(s)" "$dir/np$np.txt" || { echo "FAIL -np $np did not run on $np ranks"; fail=1; }
   "$py" "$here/compare_results.py" "$dir/one.jsonl" "$dir/np$np.jsonl" || { echo "FAIL -np $np differs"; fail=1; }
 done
+
+# Batches on and off: 20,000 tiny units (well under a millisecond each) on 2 ranks.
+printf '[base]\nN = 4\nduration = "1t0"\nreps = 20000\nseed = 1\n' >"$dir/tiny.toml"
+for ms in 50 0; do
+  mpi -np 2 "$sb" sweep "$dir/tiny.toml" --threads 1 --batch-ms $ms --out "$dir/b$ms.jsonl" >/dev/null 2>&1 ||
+    { echo "FAIL --batch-ms $ms"; fail=1; }
+done
+"$py" "$here/compare_results.py" "$dir/b50.jsonl" "$dir/b0.jsonl" || { echo "FAIL batches on and off differ"; fail=1; }
+"$py" - "$dir/b50.jsonl" "$dir/b0.jsonl" <<'PY' || fail=1
+import json, sys
+for path, batched in zip(sys.argv[1:], (True, False)):
+    lines = open(path).read().splitlines()
+    messages = json.loads(lines[0])["messages"]
+    remote = sum(1 for l in lines[1:] for r in json.loads(l)["runs"] if r["rank"] != 0)
+    print(f"{'batches' if batched else 'one unit a request'}: {remote} units run by rank 1 in {messages} messages")
+    if batched and not messages * 10 < remote:
+        sys.exit("FAIL batched dealing did not batch")
+    if not batched and messages < remote:
+        sys.exit("FAIL --batch-ms 0 sent fewer messages than units")
+PY
 
 # springblock run spreads its repetitions the same way: --reps 8 on 2 ranks = one process.
 opts=(--N 40 --reps 8 --seed 11 --duration 3t0 --pattern periodic:3,1 --velocity 5cm/s --json)
@@ -65,6 +89,8 @@ victim=$(rank1_when_busy)
 wait $job 2>/dev/null
 [ $? -ne 0 ] || { echo "FAIL the job with a killed rank exited 0"; fail=1; }
 [ ! -e "$dir/k.jsonl" ] || { echo "FAIL a killed job wrote results"; fail=1; }
+PYTHONPATH="$root" PYTHONDONTWRITEBYTECODE=1 "$py" -m tools.sweep_results "$dir/k.jsonl" | grep -q "^partial: " ||
+  { echo "FAIL the killed job left no valid partial results file"; fail=1; }
 grep -q "in flight (lost, recomputed on resume): .*rank 1: [0-9]" "$dir/err" ||
   { echo "FAIL rank 0 did not report the units rank 1 lost"; cat "$dir/err"; fail=1; }
 done_before=$(finished "$dir/k.jsonl.checkpoint")

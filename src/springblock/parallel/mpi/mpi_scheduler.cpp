@@ -2,7 +2,12 @@
 
 #include <mpi.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <deque>
+#include <map>
 #include <exception>
 #include <numeric>
 #include <optional>
@@ -15,14 +20,17 @@
 namespace sb::parallel {
 namespace {
 
-constexpr int kRequestTag = 1;  // worker -> 0: JSON text {id and record | returned, stop, error}
-constexpr int kAssignTag = 2;   // 0 -> worker: a unit id, or -1 (that thread gets no more)
+// A request is MessagePack, not JSON text: a batch's record texts are carried as they are (JSON
+// text would escape every quote in them and rank 0 would unescape it), and its numbers as binary
+// doubles, exactly.
+constexpr int kRequestTag = 1;  // worker -> 0: {done, returned, want, idle, stop | error}
+constexpr int kAssignTag = 2;   // 0 -> worker: unit ids, none when it has nothing for that rank now
 
 double now_s() { return MPI_Wtime(); }
 
 class MpiScheduler : public Scheduler {
  public:
-  explicit MpiScheduler(int threads) {
+  MpiScheduler(int threads, double batch_s) : batch_s_(batch_s) {
     int provided = 0;
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
     if (provided < MPI_THREAD_FUNNELED) throw std::runtime_error("MPI does not support MPI_THREAD_FUNNELED");
@@ -46,7 +54,7 @@ class MpiScheduler : public Scheduler {
 
   Outcome run(const std::vector<int>& ids, const UnitRunner& run_unit, const Hooks& hooks,
               const std::atomic<bool>* interrupt) override {
-    // Rank 0 learns how many threads (request slots) each worker has.
+    // Rank 0 learns how many threads each rank has: the batches' fair share is per thread.
     std::vector<int> slots(ranks_, 0);
     MPI_Gather(&threads_, 1, MPI_INT, slots.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
     try {
@@ -54,7 +62,7 @@ class MpiScheduler : public Scheduler {
         work(run_unit, interrupt);
         return {};
       }
-      return coordinate(ids, run_unit, hooks, interrupt, std::accumulate(slots.begin() + 1, slots.end(), 0));
+      return coordinate(ids, run_unit, hooks, interrupt, std::accumulate(slots.begin(), slots.end(), 0));
     } catch (const std::exception& e) {
       // The other ranks wait on this one: say why here, then end them all.
       std::fprintf(stderr, "springblock: rank %d: error: %s\n", rank_, e.what());
@@ -66,30 +74,35 @@ class MpiScheduler : public Scheduler {
 
  private:
   Outcome coordinate(const std::vector<int>& ids, const UnitRunner& run_unit, const Hooks& hooks,
-                     const std::atomic<bool>* interrupt, int worker_slots);
-  // Answers one waiting worker request (false if none): takes in the record it carries and sends
-  // the next unit, or -1, which retires that worker thread (--open_slots).
-  bool answer_one(Dealer& dealer, int& open_slots);
+                     const std::atomic<bool>* interrupt, int all_slots);
+  // Answers one waiting worker request (false if none): takes in the records and given-back
+  // units it carries and sends the next batch; an empty answer to a worker that said it is idle
+  // retires that rank (--open_ranks).
+  bool answer_one(Dealer& dealer, int& open_ranks, int all_slots);
   void work(const UnitRunner& run_unit, const std::atomic<bool>* interrupt);
-  std::optional<int> ask(const nlohmann::json& message);
+  std::vector<int> ask(const nlohmann::json& message);
+  // How many units to ask for: enough to keep this rank's threads busy about batch_s_, from the
+  // running mean of its units' wall time; one while none is measured or batching is off.
+  int batch_size(double unit_s) const;
 
   int rank_ = 0, ranks_ = 1, threads_ = 1;
+  double batch_s_ = 0;
   long messages_ = 0;
   double message_s_ = 0;
 };
 
 Outcome MpiScheduler::coordinate(const std::vector<int>& ids, const UnitRunner& run_unit, const Hooks& hooks,
-                                 const std::atomic<bool>* interrupt, int worker_slots) {
+                                 const std::atomic<bool>* interrupt, int all_slots) {
   Dealer dealer(ids, hooks, interrupt);
   UnitPool pool(threads_, [&](int id) { return run_unit(id, interrupt); });
-  int open_slots = worker_slots;  // worker threads not yet told "no more"
+  int open_ranks = ranks_ - 1;  // worker ranks not yet retired
   for (;;) {
     if (dealer.interrupted() && pool.busy() == 0) break;  // the caller aborts the workers
-    if (!dealer.interrupted() && dealer.queue_empty() && pool.busy() == 0 && open_slots == 0) break;
+    if (!dealer.interrupted() && dealer.queue_empty() && pool.busy() == 0 && open_ranks == 0) break;
     // Short waits while workers may be asking: a request is answered within about a millisecond.
-    serve_pool(pool, dealer, 0, std::chrono::milliseconds(open_slots > 0 ? 1 : 100));
+    serve_pool(pool, dealer, 0, std::chrono::milliseconds(open_ranks > 0 ? 1 : 100));
     bool answered = false;
-    while (open_slots > 0 && !dealer.interrupted() && answer_one(dealer, open_slots)) answered = true;
+    while (open_ranks > 0 && !dealer.interrupted() && answer_one(dealer, open_ranks, all_slots)) answered = true;
     // With no unit left to run itself, rank 0 would spin on MPI_Iprobe and take a core from the
     // workers finishing the last units: a short nap instead (it bounds the answer's delay). Not
     // while units remain: its pool is empty for a moment after each of its own units.
@@ -103,56 +116,101 @@ Outcome MpiScheduler::coordinate(const std::vector<int>& ids, const UnitRunner& 
   return o;
 }
 
-bool MpiScheduler::answer_one(Dealer& dealer, int& open_slots) {
+bool MpiScheduler::answer_one(Dealer& dealer, int& open_ranks, int all_slots) {
   const double t0 = now_s();
   int flag = 0;
   MPI_Status st;
   MPI_Iprobe(MPI_ANY_SOURCE, kRequestTag, MPI_COMM_WORLD, &flag, &st);
   if (!flag) return false;
   int n = 0;
-  MPI_Get_count(&st, MPI_CHAR, &n);
-  std::string text(static_cast<std::size_t>(n), '\0');
+  MPI_Get_count(&st, MPI_BYTE, &n);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(n));
   const int src = st.MPI_SOURCE;
-  MPI_Recv(text.data(), n, MPI_CHAR, src, kRequestTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  const auto msg = text.empty() ? nlohmann::json::object() : nlohmann::json::parse(text);
+  MPI_Recv(bytes.data(), n, MPI_BYTE, src, kRequestTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  auto msg = nlohmann::json::from_msgpack(bytes);
   message_s_ += now_s() - t0;  // receiving and decoding; the hooks (checkpoint) are timed by their owner
   if (msg.contains("error"))
     throw std::runtime_error("rank " + std::to_string(src) + ": " + msg.at("error").get<std::string>());
-  if (msg.contains("record")) dealer.finished(msg.at("id").get<int>(), src, msg.at("record"));
-  if (msg.contains("returned")) {
-    dealer.give_back(msg.at("returned").get<int>());
+  if (auto done = msg.find("done"); done != msg.end())  // found, not value(): no copy of the batch
+    for (auto& d : *done) dealer.finished(d.at("id").get<int>(), src, std::move(d.at("record")));
+  for (const auto& id : msg.value("returned", nlohmann::json::array())) {
+    dealer.give_back(id.get<int>());
     dealer.notes.push_back("rank " + std::to_string(src) + " was interrupted and gave back unit " +
-                           std::to_string(msg.at("returned").get<int>()) + " (run elsewhere)");
+                           std::to_string(id.get<int>()) + " (run elsewhere)");
   }
-  std::optional<int> id;
-  if (!msg.value("stop", false)) id = dealer.next(src);
-  const int reply = id ? *id : -1;
+  std::vector<int> ids;
+  const int want = msg.value("want", 0);
+  if (want > 0 && !msg.value("stop", false)) {
+    // At most half a fair share of what is left per thread, so the last batches are small and
+    // no rank is left holding many units while the others idle.
+    const int fair = std::max(1, dealer.queued() / (2 * all_slots));
+    ids = dealer.next_batch(src, std::min(want, fair));
+  }
+  dealer.settle();  // the records and the new assignment in one write, before the answer goes
   const double t1 = now_s();
-  MPI_Send(&reply, 1, MPI_INT, src, kAssignTag, MPI_COMM_WORLD);
-  if (!id) --open_slots;
+  MPI_Send(ids.data(), static_cast<int>(ids.size()), MPI_INT, src, kAssignTag, MPI_COMM_WORLD);
+  if (ids.empty() && msg.value("idle", false)) --open_ranks;
   ++messages_;
   message_s_ += now_s() - t1;
   return true;
 }
 
-std::optional<int> MpiScheduler::ask(const nlohmann::json& message) {
-  const std::string text = message.empty() ? "" : message.dump();
-  MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, kRequestTag, MPI_COMM_WORLD);
-  int id = -1;
-  MPI_Recv(&id, 1, MPI_INT, 0, kAssignTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  return id >= 0 ? std::optional<int>(id) : std::nullopt;
+std::vector<int> MpiScheduler::ask(const nlohmann::json& message) {
+  const auto bytes = nlohmann::json::to_msgpack(message);
+  MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, 0, kRequestTag, MPI_COMM_WORLD);
+  MPI_Status st;
+  MPI_Probe(0, kAssignTag, MPI_COMM_WORLD, &st);
+  int n = 0;
+  MPI_Get_count(&st, MPI_INT, &n);
+  std::vector<int> ids(static_cast<std::size_t>(n));
+  MPI_Recv(ids.data(), n, MPI_INT, 0, kAssignTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return ids;
 }
 
-// A worker: one request per thread to start, then each finished unit goes back with a request
-// for the next, until rank 0 has nothing left for any of its threads.
+int MpiScheduler::batch_size(double unit_s) const {
+  if (batch_s_ <= 0 || unit_s <= 0) return 1;
+  return static_cast<int>(std::clamp(std::llround(threads_ * batch_s_ / unit_s), 1LL, 100000LL));
+}
+
+// A worker: asks for a batch when its queue is empty and a thread is free, sending with it the
+// records finished since its last request; once rank 0 has nothing more for it (or it is
+// interrupted: the units not finished go back) it sends what is left as it comes in, and stops
+// after rank 0 has answered a request that said it is idle.
 void MpiScheduler::work(const UnitRunner& run_unit, const std::atomic<bool>* interrupt) {
   UnitPool pool(threads_, [&](int id) { return run_unit(id, interrupt); });
-  for (int t = 0; t < threads_; ++t)
-    if (auto id = ask(nlohmann::json::object())) pool.submit(*id);
-  while (pool.busy() > 0) {
+  std::deque<int> todo;
+  std::map<int, double> started;  // unit -> when it was handed to a thread
+  double unit_s = 0;              // running mean of this rank's unit wall time
+  nlohmann::json msg = nlohmann::json::object();  // what the next request carries
+  bool more = true;               // rank 0 may still have units for this rank
+  for (;;) {
+    const bool stop = interrupt && interrupt->load();
+    if (stop)
+      for (; !todo.empty(); todo.pop_front()) msg["returned"].push_back(todo.front());
+    for (; !stop && pool.has_room() && !todo.empty(); todo.pop_front()) {
+      started[todo.front()] = now_s();
+      pool.submit(todo.front());
+    }
+    const bool hungry = more && !stop && todo.empty() && pool.has_room();
+    const bool winding_down = !more || stop;
+    if (hungry || msg.contains("error") || (winding_down && (!msg.empty() || pool.busy() == 0))) {
+      const bool idle = pool.busy() == 0 && todo.empty();
+      msg["want"] = hungry ? batch_size(unit_s) : 0;
+      msg["idle"] = idle;
+      if (stop) msg["stop"] = true;
+      const auto ids = ask(msg);
+      msg = nlohmann::json::object();
+      todo.insert(todo.end(), ids.begin(), ids.end());
+      if (ids.empty()) {
+        more = false;
+        if (idle) return;
+      }
+      continue;
+    }
     auto d = pool.collect(std::chrono::milliseconds(100));
     if (!d) continue;
-    nlohmann::json msg = nlohmann::json::object();
+    const double wall_s = now_s() - started[d->id];
+    started.erase(d->id);
     if (d->error) {
       try {
         std::rethrow_exception(d->error);
@@ -160,18 +218,18 @@ void MpiScheduler::work(const UnitRunner& run_unit, const std::atomic<bool>* int
         msg["error"] = e.what();
       }
     } else if (d->result.is_null()) {
-      msg["returned"] = d->id;  // cut short by an interrupt: not a result
+      msg["returned"].push_back(d->id);  // cut short by an interrupt: not a result
     } else {
-      msg["id"] = d->id;
-      msg["record"] = std::move(d->result);
+      unit_s = unit_s > 0 ? 0.8 * unit_s + 0.2 * wall_s : wall_s;
+      msg["done"].push_back({{"id", d->id}, {"record", std::move(d->result)}});
     }
-    if (interrupt && interrupt->load()) msg["stop"] = true;
-    if (auto id = ask(msg)) pool.submit(*id);
   }
 }
 
 }  // namespace
 
-std::unique_ptr<Scheduler> make_mpi_scheduler(int threads) { return std::make_unique<MpiScheduler>(threads); }
+std::unique_ptr<Scheduler> make_mpi_scheduler(int threads, double batch_s) {
+  return std::make_unique<MpiScheduler>(threads, batch_s);
+}
 
 }  // namespace sb::parallel
