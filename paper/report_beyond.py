@@ -43,6 +43,16 @@ def resolved_list(cmp, name):
     return "; ".join(f"{name(c)}: {diff_text(c)} (z = {c['z']:+.1f})" for c in hits)
 
 
+def sign_text(cmp):
+    """How many of these differences are resolved, and their signs."""
+    hits = [c for c in cmp if c["resolved"]]
+    if not hits:
+        return f"none of {len(cmp)} resolved"
+    neg = sum(c["diff"] < 0 for c in hits)
+    sign = "all lower" if neg == len(hits) else "all higher" if neg == 0 else f"{neg} lower, {len(hits) - neg} higher"
+    return f"{len(hits)} of {len(cmp)} resolved, {sign} than uniform"
+
+
 def graded_blocks(doc, path, figs):
     scenes = {s["id"]: s for s in doc["scenes"]}
     cmp = doc["comparisons"]
@@ -84,6 +94,12 @@ def graded_blocks(doc, path, figs):
         extra = f" vs {slope[c['b']]:+g}" if c["what"] == "rising - falling" else ""
         return f"{label[c['surface']]} {c['quantity']} {slope[c['a']]:+g}{extra}"
 
+    signs = []
+    for surface in dict.fromkeys(c["surface"] for c in cmp):
+        for key in ("mu_s", "mu_d"):
+            g = [c for c in cmp if c["surface"] == surface and c["quantity"] == key and c["what"] == "graded - uniform"]
+            signs.append(f"{label[surface]} {key}: {sign_text(g)}")
+    B.append(("p", "Graded against uniform, by surface and quantity: " + "; ".join(signs) + "."))
     B.append(("p", f"{n_res} of {len(cmp)} differences are resolved: {resolved_list(cmp, name)}. "
                    f"Direction (rising against falling at the same |change|): "
                    f"{sum(c['resolved'] for c in direction)} of {len(direction)} resolved. "
@@ -128,6 +144,15 @@ def composite_blocks(doc, path, figs):
     B.append(("table", ["contrast", "segment blocks", "mu_s difference", "mu_s verdict", "mu_d difference",
                         "mu_d verdict"], rows))
     measured = [c for c in cmp if c["n"] > 1]
+    for key in ("mu_s", "mu_d"):
+        for contrast in sorted({x["contrast"] for i, x in x_of.items() if i != "uniform"}):
+            g = sorted([c for c in measured if c["quantity"] == key and x_of[c["id"]]["contrast"] == contrast],
+                       key=lambda c: x_of[c["id"]]["segment_blocks"])
+            hi = [str(x_of[c["id"]]["segment_blocks"]) for c in g if c["resolved"] and c["diff"] > 0]
+            lo = [str(x_of[c["id"]]["segment_blocks"]) for c in g if c["resolved"] and c["diff"] < 0]
+            B.append(("p", f"{key}, contrast {contrast:g}: {sign_text(g)}"
+                           + (f"; higher with segments of {', '.join(hi)} blocks" if hi else "")
+                           + (f"; lower with segments of {', '.join(lo)} blocks" if lo else "") + "."))
     name = lambda c: f"contrast {x_of[c['id']]['contrast']:g}, segments of {x_of[c['id']]['segment_blocks']}, {c['quantity']}"  # noqa: E731
     B.append(("p", f"{sum(c['resolved'] for c in measured)} of {len(measured)} differences are resolved: "
                    f"{resolved_list(measured, name)}. The largest standard error of a paired difference is "
