@@ -45,13 +45,17 @@ set(SB_FIG_INPUTS_design_map "")
 set(SB_FIG_STUDIES_design_map design_map)
 set(SB_FIG_INPUTS_slip_events "")
 set(SB_FIG_STUDIES_slip_events slip_events)
+set(SB_FIG_INPUTS_graded_friction "")
+set(SB_FIG_STUDIES_graded_friction graded_friction)
+set(SB_FIG_INPUTS_composite_stiffness "")
+set(SB_FIG_STUDIES_composite_stiffness composite_stiffness)
 # figure name -> optional studies it draws (make studies; read from the build tree if run there,
 # else from the committed paper/data/<study>.json, which is what the file dependency watches).
 set(SB_FIG_STUDIES_accuracy_cost rk4_refinement)
 set(SB_FIG_STUDIES_layout layout)
 set(SB_FIG_INPUTS_layout "")
 set(SB_FIGURES fig1 fig_s1 fig_s2 fig2 fig_p1 fig3 fig4 fig5 fig_p2 fig_p3 sensitivity accuracy_cost schematics layout
-               design_map slip_events)
+               design_map slip_events graded_friction composite_stiffness)
 
 set(SB_FIG_PNGS "")
 set(SB_FIG_DATA_TARGETS "")
@@ -109,6 +113,7 @@ add_custom_target(report
   COMMAND ${SB_PY} -m paper.build_report
           --data ${SB_REPRO_DIR} --figures ${SB_FIG_OUT} --out ${SB_PAPER_OUT}
   DEPENDS ${SB_FIG_PNGS} ${CMAKE_SOURCE_DIR}/paper/build_report.py ${CMAKE_SOURCE_DIR}/paper/report_studies.py
+          ${CMAKE_SOURCE_DIR}/paper/report_beyond.py
           ${CMAKE_SOURCE_DIR}/paper/choices.md
           ${CMAKE_SOURCE_DIR}/tables/render_tables.py ${CMAKE_SOURCE_DIR}/tools/summary_schema.py
   COMMENT "Reproduction report: ${SB_PAPER_OUT}/report.html"

@@ -5,14 +5,16 @@ import json
 import math
 from pathlib import Path
 
+from paper import report_beyond
 from tools.reproduction import stats
 from tools.reproduction.inputs import published_rows
 
 REPO = Path(__file__).resolve().parent.parent
 
-STUDIES = ("layout", "extraction", "method_bias", "rk4_refinement", "slip_events")
+STUDIES = ("layout", "extraction", "method_bias", "rk4_refinement", "slip_events", "graded_friction",
+           "composite_stiffness")
 # The studies that go beyond the paper (their own section of the report), in STUDIES' order.
-BEYOND = ("slip_events",)
+BEYOND = ("slip_events", "graded_friction", "composite_stiffness")
 
 
 def load_study(data, name):
@@ -165,7 +167,9 @@ def study_blocks(data, figs):
     titles = {"layout": "Pattern layout", "extraction": "Reading mu_s off the loading curve",
               "method_bias": "The paper's integrator on the deviating rows",
               "rk4_refinement": "RK4 below the paper's step",
-              "slip_events": "Slip events and their sizes"}
+              "slip_events": "Slip events and their sizes",
+              "graded_friction": "Graded micro friction along the chain",
+              "composite_stiffness": "Composite chains: alternating soft and hard segments"}
     for name in STUDIES:
         if name in BEYOND:
             continue
@@ -191,6 +195,10 @@ def one_study(data, figs, name, title):
         B += method_bias_blocks(doc, path)
     elif name == "slip_events":
         B += slip_events_blocks(doc, path, figs)
+    elif name == "graded_friction":
+        B += report_beyond.graded_blocks(doc, path, figs)
+    elif name == "composite_stiffness":
+        B += report_beyond.composite_blocks(doc, path, figs)
     else:
         B.append(("p", "Drawn with accuracy_cost's settings in the accuracy figure above. " + provenance_text(doc, path)))
     return B

@@ -84,11 +84,19 @@ rc=$?
 { [ "$rc" -eq 2 ] && grep -qF "cannot read materials file '$dir/missing.tsv'" <<<"$err" && [ ! -e "$dir/out.json" ]; } ||
   { echo "FAIL missing file: exit $rc: $err"; fail=1; }
 
-# The closed forms and the surface search refuse what they would silently ignore or override.
-err=$("$sb" theory --N 40 --materials "$dir/defaults.tsv" 2>&1 >/dev/null)
+# The closed forms take per-block fields block by block: a file of the scene's own values gives the
+# uniform chain's (mu_d)_M; a random surface has no fixed contact blocks and is refused.
+out=$("$sb" theory --N 40 --materials "$dir/defaults.tsv" --json)
 rc=$?
-{ [ "$rc" -eq 2 ] && grep -qF "theory gives the closed forms of a uniform chain" <<<"$err"; } ||
-  { echo "FAIL theory with materials: exit $rc: $err"; fail=1; }
+{ [ "$rc" -eq 0 ] && "$py" -c 'import json,sys; j=json.loads(sys.argv[1]); c=j["chain"]
+assert abs(c["mu_d_macro_gaussian"] - j["mu_d_macro_gaussian"]) <= 1e-12 * j["mu_d_macro_gaussian"], j
+assert c["n_contact"] == 40 and c["quadratures"] == 1' "$out"; } ||
+  { echo "FAIL theory with materials: exit $rc: $out"; fail=1; }
+err=$("$sb" theory --N 40 --pattern random:0.5 --materials "$dir/defaults.tsv" 2>&1 >/dev/null)
+rc=$?
+{ [ "$rc" -eq 2 ] && grep -qF "a random surface draws a new mask each repetition" <<<"$err"; } ||
+  { echo "FAIL theory with materials on a random surface: exit $rc: $err"; fail=1; }
+# The surface search refuses what it would silently override.
 err=$("$sb" design --N 40 --materials "$dir/masked.tsv" --target-mu-s 0.7 2>&1 >/dev/null)
 rc=$?
 { [ "$rc" -eq 2 ] && grep -qF "a contact column or segment would override every candidate's pattern" <<<"$err"; } ||

@@ -35,3 +35,15 @@ def test_mu_d_above_mu_s_is_refused():
 def test_submodule_imports():
     import springblock.theory as theory
     assert theory is sb.theory
+
+
+def test_of_scene_takes_materials_like_the_command(cli, tmp_path):
+    """Per-block coefficients as Python arrays and as a file give the same chain prediction."""
+    mu_d = np.linspace(0.2, 0.7, 6)
+    path = tmp_path / "graded.tsv"
+    path.write_text("mu_d\n" + "".join(f"{x!r}\n" for x in mu_d))
+    expected = cli("theory", "--N", 6, "--materials", path, "--json")["chain"]
+    chain = sb.theory.of_scene(sb.Scene(N=6, materials={"mu_d": mu_d}))["chain"]
+    assert chain == expected
+    assert chain["n_contact"] == 6 and chain["quadratures"] == 6
+    assert chain["mu_d_macro_gaussian"] == pytest.approx(np.mean(chain["block_mu_d_macro"]), rel=1e-14)

@@ -1,0 +1,160 @@
+"""The report's studies of materials given block by block ('Beyond the paper'): graded micro
+friction and composite soft/hard chains. Every number is read from the study's document; each
+study's question and criterion come first, as its driver wrote them before the runs."""
+import math
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+# P(|Z| >= 3) for a standard normal Z: the criterion's false-alarm chance per comparison.
+TWO_SIDED_3SIGMA = math.erfc(3 / math.sqrt(2))
+
+
+def provenance_text(doc, path):
+    prov = doc["provenance"]
+    where = path.relative_to(REPO) if REPO in path.parents else path
+    return f"Data: `{where}`, commit {prov['commit']}, {prov['utc']}."
+
+
+def figure(figs, name):
+    png = Path(figs) / f"{name}.png"
+    return ("img", str(png) if png.is_file() else None, f"{name}: figures/{name}.py")
+
+
+def cpu_seconds(doc):
+    return sum(r.get("cpu_s", 0.0) for s in doc["scenes"] for r in s["result"].get("runs", []))
+
+
+def stat_text(st):
+    return f"{st['mean']:.4f} ± {st['sem']:.4f}" if st.get("mean") is not None else "not measured"
+
+
+def verdict(c):
+    return "resolved" if c["resolved"] else "not resolved"
+
+
+def diff_text(c):
+    return f"{c['diff']:+.4f} ± {c['sem']:.4f}"
+
+
+def resolved_list(cmp, name):
+    hits = [c for c in cmp if c["resolved"]]
+    if not hits:
+        return "none"
+    return "; ".join(f"{name(c)}: {diff_text(c)} (z = {c['z']:+.1f})" for c in hits)
+
+
+def sign_text(cmp):
+    """How many of these differences are resolved, and their signs."""
+    hits = [c for c in cmp if c["resolved"]]
+    if not hits:
+        return f"none of {len(cmp)} resolved"
+    neg = sum(c["diff"] < 0 for c in hits)
+    sign = "all lower" if neg == len(hits) else "all higher" if neg == 0 else f"{neg} lower, {len(hits) - neg} higher"
+    return f"{len(hits)} of {len(cmp)} resolved, {sign} than uniform"
+
+
+def graded_blocks(doc, path, figs):
+    scenes = {s["id"]: s for s in doc["scenes"]}
+    cmp = doc["comparisons"]
+    reps = cmp[0]["n"]
+    label = {s["id"].rsplit("_", 1)[0]: s["x"]["pattern"] for s in doc["scenes"]}
+    uniform = [s for s in doc["scenes"] if s["x"]["slope"] == 0]
+    B = [("p", f"**Question.** {doc['question']} **Criterion** (fixed before the runs). {doc['criterion']} "
+               f"Among its {len(cmp)} comparisons a 3-sigma rule (two-sided chance {TWO_SIDED_3SIGMA:.4f} each "
+               f"under no effect) raises one false alarm or more {1 - (1 - TWO_SIDED_3SIGMA) ** len(cmp):.0%} of "
+               "the time; a difference not resolved is reported with its standard error, the size of effect the "
+               "study could have seen."),
+         ("p", "Every block hangs from the slider by its own spring and the slider moves towards +x; block i "
+               "rests at i l_x, so the block index grows in the pulling direction (block 0 trails, block N-1 "
+               "leads), and 'rising' means micro mu_s growing with the block index. There is no pulled end: "
+               "the equations are the same read backwards, so on the smooth surface rising and falling ramps "
+               "are the same ensemble and any difference between them is noise; a periodic:10,10 surface laid "
+               "out pawl first is not its own mirror image, the only way the direction can enter. "
+               f"The paper's chain (N = 360, L_x = 7.2 cm, default parameters), micro mu_s a linear ramp whose "
+               f"mean over the contact blocks is {doc['mean_mu_s']:g} (the uniform chain's), total changes "
+               f"{', '.join(f'{v:+g}' if v else '0' for v in sorted({s['x']['slope'] for s in doc['scenes']}))}; event method, "
+               f"{reps} repetitions of {doc['duration_t0']:g} t0 per scene, one seed for all scenes, so that "
+               f"differences are paired repetition by repetition; {cpu_seconds(doc):.1f} CPU s in all "
+               f"({doc['wall_seconds']:.1f} s wall). " + provenance_text(doc, path)),
+         figure(figs, "graded_friction")]
+    B.append(("p", "The uniform chains: " + "; ".join(
+        f"{s['x']['pattern']}: mu_s {stat_text(s['result']['mu_s'])}, mu_d {stat_text(s['result']['mu_d'])}"
+        for s in uniform) + "."))
+    slope = {s["id"].rsplit("_", 1)[1]: s["x"]["slope"] for s in doc["scenes"]}
+    rows = [[label[c["surface"]], c["quantity"], c["what"],
+             f"{slope[c['a']]:+g}" + (f" vs {slope[c['b']]:+g}" if c["what"] == "rising - falling" else ""),
+             diff_text(c), f"{c['z']:+.1f}", verdict(c)] for c in cmp]
+    B.append(("table", ["surface", "quantity", "comparison", "mu_s change", "paired difference", "z", "verdict"],
+              rows))
+    n_res = sum(c["resolved"] for c in cmp)
+    worst = max(c["sem"] for c in cmp)
+    direction = [c for c in cmp if c["what"] == "rising - falling"]
+
+    def name(c):
+        extra = f" vs {slope[c['b']]:+g}" if c["what"] == "rising - falling" else ""
+        return f"{label[c['surface']]} {c['quantity']} {slope[c['a']]:+g}{extra}"
+
+    signs = []
+    for surface in dict.fromkeys(c["surface"] for c in cmp):
+        for key in ("mu_s", "mu_d"):
+            g = [c for c in cmp if c["surface"] == surface and c["quantity"] == key and c["what"] == "graded - uniform"]
+            signs.append(f"{label[surface]} {key}: {sign_text(g)}")
+    B.append(("p", "Graded against uniform, by surface and quantity: " + "; ".join(signs) + "."))
+    B.append(("p", f"{n_res} of {len(cmp)} differences are resolved: {resolved_list(cmp, name)}. "
+                   f"Direction (rising against falling at the same |change|): "
+                   f"{sum(c['resolved'] for c in direction)} of {len(direction)} resolved. "
+                   f"The largest standard error of a paired difference is {worst:.4f}: "
+                   "effects below about three times that are beyond this study."))
+    return B
+
+
+def composite_blocks(doc, path, figs):
+    cmp = doc["comparisons"]
+    x_of = {s["id"]: s["x"] for s in doc["scenes"]}
+    uniform = next(s for s in doc["scenes"] if s["id"] == "uniform")
+    reps = max(c["n"] for c in cmp)
+    runs = [r for s in doc["scenes"] for r in s["result"].get("runs", [])]
+    per_run = cpu_seconds(doc) / max(1, len(runs))
+    B = [("p", f"**Question.** {doc['question']} **Criterion** (fixed before the runs). {doc['criterion']}"),
+         ("p", "Segments of L blocks alternate soft and hard from block 0; a hard segment's internal springs and "
+               "masses are c times a soft one's, about the uniform chain's (soft 1/sqrt(c), hard sqrt(c)), so "
+               "c = 1 is the uniform chain and the local wave speed is the same in both phases "
+               "(paper/choices.md, 'Graded and composite chains'). N = 200 over 4 cm (the paper's block size), smooth surface, "
+               f"contrasts {', '.join(f'{c:g}' for c in sorted({x['contrast'] for x in x_of.values()} - {1.0}))}, "
+               f"segment lengths {', '.join(str(L) for L in sorted({x['segment_blocks'] for i, x in x_of.items() if i != 'uniform'}))} "
+               f"blocks; one seed for all scenes (paired). **Integrator**: {doc['integrator_note']}, at "
+               f"h = {uniform['result']['scene']['dt_s'] * 1e3:g} ms; "
+               + ("each repetition stops at its first macroscopic slip (mu_s only); "
+                  if uniform["result"]["scene"].get("stop_after_mu_s") else "")
+               + f"{reps} repetitions of {doc['duration_t0']:g} t0 per scene, {cpu_seconds(doc):.0f} CPU s in all, "
+               f"{per_run:.1f} CPU s a repetition ({doc['wall_seconds']:.0f} s wall). " + provenance_text(doc, path)),
+         figure(figs, "composite_stiffness"),
+         ("p", f"The uniform chain: mu_s {stat_text(uniform['result']['mu_s'])}, "
+               f"mu_d {stat_text(uniform['result']['mu_d'])}.")]
+    by_id = {}
+    for c in cmp:
+        by_id.setdefault(c["id"], {})[c["quantity"]] = c
+    rows = []
+    for i, q in by_id.items():
+        row = [f"{x_of[i]['contrast']:g}", str(x_of[i]["segment_blocks"])]
+        for key in ("mu_s", "mu_d"):
+            c = q.get(key)
+            row += [diff_text(c), verdict(c)] if c and c["n"] > 1 else ["not measured", "-"]
+        rows.append(row)
+    B.append(("table", ["contrast", "segment blocks", "mu_s difference", "mu_s verdict", "mu_d difference",
+                        "mu_d verdict"], rows))
+    measured = [c for c in cmp if c["n"] > 1]
+    for key in ("mu_s", "mu_d"):
+        for contrast in sorted({x["contrast"] for i, x in x_of.items() if i != "uniform"}):
+            g = sorted([c for c in measured if c["quantity"] == key and x_of[c["id"]]["contrast"] == contrast],
+                       key=lambda c: x_of[c["id"]]["segment_blocks"])
+            hi = [str(x_of[c["id"]]["segment_blocks"]) for c in g if c["resolved"] and c["diff"] > 0]
+            lo = [str(x_of[c["id"]]["segment_blocks"]) for c in g if c["resolved"] and c["diff"] < 0]
+            B.append(("p", f"{key}, contrast {contrast:g}: {sign_text(g)}"
+                           + (f"; higher with segments of {', '.join(hi)} blocks" if hi else "")
+                           + (f"; lower with segments of {', '.join(lo)} blocks" if lo else "") + "."))
+    name = lambda c: f"contrast {x_of[c['id']]['contrast']:g}, segments of {x_of[c['id']]['segment_blocks']}, {c['quantity']}"  # noqa: E731
+    B.append(("p", f"{sum(c['resolved'] for c in measured)} of {len(measured)} differences are resolved: "
+                   f"{resolved_list(measured, name)}. The largest standard error of a paired difference is "
+                   f"{max(c['sem'] for c in measured):.4f}."))
+    return B
