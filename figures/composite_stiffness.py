@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Composite chains: segments of L blocks alternate soft and hard (internal springs and masses
-c times apart, about the uniform chain's), N = 200 over 4 cm, smooth surface, RK4. Paired
+c times apart, about the uniform chain's), N = 200 over 4 cm, smooth surface. Paired
 difference from the uniform chain (same draws) of (a) mu_s and (b) mu_d against the segment
 length, one line per contrast c, mean +- standard error.
 Data: the optional study `composite_stiffness` (`make studies`; committed as paper/data/composite_stiffness.json)."""
@@ -30,6 +30,7 @@ else:
         ax.set_title(title, loc="left")
         ax.legend(loc="best")
 reps = cmp[0]["n"] if cmp else "?"
-style.stamp(fig, __file__, doc, note=f"RK4; {reps} paired repetitions per point, mean +- standard error")
+method = next((x["result"]["scene"].get("method") for x in doc["scenes"]), "?")
+style.stamp(fig, __file__, doc, note=f"{method} method; {reps} paired repetitions per point, mean +- standard error")
 fig.tight_layout()
 style.save(fig, a.out, "composite_stiffness")

@@ -20,6 +20,14 @@ def figure(figs, name):
     return ("img", str(png) if png.is_file() else None, f"{name}: figures/{name}.py")
 
 
+def integrator_text(scene):
+    """The method a study's scenes ran with, from their scene record."""
+    if scene.get("method") == "rk4":
+        return f"the paper's fixed-step RK4 at h = {scene['dt_s'] * 1e3:g} ms"
+    return (f"the event method ({scene.get('stepper', 'exact')} stepper, tol {scene.get('tol', 0):g}), exact on "
+            "chains whose blocks differ")
+
+
 def cpu_seconds(doc):
     return sum(r.get("cpu_s", 0.0) for s in doc["scenes"] for r in s["result"].get("runs", []))
 
@@ -122,8 +130,7 @@ def composite_blocks(doc, path, figs):
                "(paper/choices.md, 'Graded and composite chains'). N = 200 over 4 cm (the paper's block size), smooth surface, "
                f"contrasts {', '.join(f'{c:g}' for c in sorted({x['contrast'] for x in x_of.values()} - {1.0}))}, "
                f"segment lengths {', '.join(str(L) for L in sorted({x['segment_blocks'] for i, x in x_of.items() if i != 'uniform'}))} "
-               f"blocks; one seed for all scenes (paired). **Integrator**: {doc['integrator_note']}, at "
-               f"h = {uniform['result']['scene']['dt_s'] * 1e3:g} ms; "
+               f"blocks; one seed for all scenes (paired). **Integrator**: {integrator_text(uniform['result']['scene'])}; "
                + ("each repetition stops at its first macroscopic slip (mu_s only); "
                   if uniform["result"]["scene"].get("stop_after_mu_s") else "")
                + f"{reps} repetitions of {doc['duration_t0']:g} t0 per scene, {cpu_seconds(doc):.0f} CPU s in all, "
