@@ -65,7 +65,11 @@ void add_target_options(CLI::App* cmd, DesignArgs& a) {
 
 void add_search_options(CLI::App* cmd, design::Query& q) {
   cmd->add_option("--top", q.top, "candidates verified and reported (default 5)");
-  cmd->add_option("--verify-reps", q.verify_reps, "fresh full repetitions of each reported candidate (default 10)");
+  cmd->add_option("--verify-reps", q.verify.reps, "fresh full repetitions of each reported candidate at first (default 10)");
+  cmd->add_option("--verify-max-reps", q.verify.max_reps,
+                  "doubled while a candidate's distance to the target is unresolved, up to this many (default 80)");
+  cmd->add_option("--resolution", q.verify.resolution,
+                  "a distance to the target counts as resolved once 2 SEM is at most this (default 0.002)");
   cmd->add_option("--screen-reps", q.search.screen_reps, "repetitions of every candidate in rung 0 (default 1)");
   cmd->add_option("--eta", q.search.eta, "successive halving: keep 1/eta of the survivors per rung (default 4)");
   cmd->add_option("--growth", q.search.growth, "successive halving: repetitions multiplied per rung (default 2)");
@@ -126,14 +130,17 @@ void print_table(const design::Query& q, const design::Outcome& o) {
               c.dropped_contact, c.dropped_feature, o.search.rungs.size(), o.wall_s);
   std::printf("target: mu_s %s, mu_d %s, ratio %s\n", q.target.mu_s.text().c_str(), q.target.mu_d.text().c_str(),
               q.target.ratio.text().c_str());
-  std::printf("fresh estimates (%d reps each, seed %llu); %s\n", q.verify_reps,
+  std::printf("fresh estimates (%d reps each at first, up to %d, seed %llu); %s\n", q.verify.reps, q.verify.max_reps,
               (unsigned long long)design::stage_seed(q.base.seed, design::kVerifyStage), design::meets_rule().c_str());
-  std::printf("%-3s %-22s %7s %-17s %-17s %s\n", "#", "pattern", "S/Stot", "mu_s", "mu_d", "meets");
+  std::printf("%s (resolution %g)\n", design::order_rule().c_str(), q.verify.resolution);
+  std::printf("%-3s %-22s %7s %-17s %-17s %-6s %-10s %5s %-8s\n", "#", "pattern", "S/Stot", "mu_s", "mu_d", "meets",
+              "score", "reps", "resolved");
   for (std::size_t i = 0; i < o.verified.size(); ++i) {
     const auto& v = o.verified[i];
-    std::printf("%-3zu %-22s %7.4f %-17s %-17s %s\n", i + 1, pattern_label(o.candidates.kept[v.candidate].spec).c_str(),
-                o.candidates.kept[v.candidate].contact_fraction, statistic_text(v.mu_s).c_str(),
-                statistic_text(v.mu_d).c_str(), v.meets_target ? "yes" : "no");
+    std::printf("%-3zu %-22s %7.4f %-17s %-17s %-6s %-10.4f %5d %s (2 SEM %.4f)\n", i + 1,
+                pattern_label(o.candidates.kept[v.candidate].spec).c_str(), o.candidates.kept[v.candidate].contact_fraction,
+                statistic_text(v.mu_s).c_str(), statistic_text(v.mu_d).c_str(), v.meets_target ? "yes" : "no", v.score,
+                v.reps, v.resolved ? "yes" : "no", v.half_width);
   }
   std::printf("feasible: %s\n", o.feasible ? "yes" : "no");
   if (!o.feasible) std::printf("why: %s\n", design::infeasible_reason(q, o).c_str());

@@ -34,8 +34,18 @@ gap = abs(best["mu_s"]["mean"] - known["mean"])
 tol = 3 * math.hypot(best["mu_s"]["sem"], known["sem"])
 assert same or gap <= tol, f"found {best['pattern']} mu_s {best['mu_s']['mean']:.4f}, known {known['mean']:.4f} +- {known['sem']:.4f}"
 for key in ("mu_s", "mu_d"):
-    assert set(best[key]) >= {"mean", "sem", "n"} and best[key]["n"] == 6, best[key]
-print("known surface found again:", best["pattern"], "(known periodic:3,8)")
+    assert set(best[key]) >= {"mean", "sem", "n"} and best[key]["n"] == best["reps"] >= 6, best[key]
+# The answers in the order of their printed scores; each one's repetitions doubled from 6 until its
+# distance is resolved or the budget is spent, and the resolution it reached stated.
+scores = [b["score"] for b in found["best"]]
+assert scores == sorted(scores), f"answers out of the order of their scores: {scores}"
+budget = found["search"]["verify_max_reps"]
+for b in found["best"]:
+    assert b["reps"] in (6, 12, 24, 48, budget), b["reps"]
+    assert b["resolved"] or b["reps"] == budget, f"{b['pattern']}: unresolved at {b['reps']} of {budget} repetitions"
+    assert b["half_width"] == max(2 * b["mu_s"]["sem"], 0), (b["half_width"], b["mu_s"]["sem"])
+print("known surface found again:", best["pattern"], "(known periodic:3,8);",
+      ", ".join(f"{b['pattern']} score {b['score']:.4f} reps {b['reps']} 2SEM {b['half_width']:.4f}" for b in found["best"]))
 PY
 
 # 2. An infeasible target: mu_s = 0.2 is far below anything a pattern reaches.

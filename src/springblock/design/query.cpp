@@ -27,8 +27,12 @@ void validate(const Query& q) {
   require(q.target.any(), "target",
           "no target given; give --target-mu-s, --target-mu-d, --target-ratio, --minimise or --maximise");
   require(q.top >= 1 && q.top <= 100, "top", std::to_string(q.top) + " is outside [1, 100]");
-  require(q.verify_reps >= 2 && q.verify_reps <= 1000, "verify_reps",
-          std::to_string(q.verify_reps) + " is outside [2, 1000] (a standard error needs 2)");
+  require(q.verify.reps >= 2 && q.verify.reps <= 1000, "verify_reps",
+          std::to_string(q.verify.reps) + " is outside [2, 1000] (a standard error needs 2)");
+  require(q.verify.max_reps >= q.verify.reps && q.verify.max_reps <= 10000, "verify_max_reps",
+          std::to_string(q.verify.max_reps) + " is outside [verify_reps = " + std::to_string(q.verify.reps) + ", 10000]");
+  require(q.verify.resolution > 0 && q.verify.resolution <= 1, "resolution",
+          printed(q.verify.resolution) + " is outside (0, 1]");
   const auto& s = q.search;
   require(s.screen_reps >= 1 && s.screen_reps <= 100, "screen_reps", std::to_string(s.screen_reps) + " is outside [1, 100]");
   require(s.eta >= 2 && s.eta <= 100, "eta", std::to_string(s.eta) + " is outside [2, 100]");
@@ -60,8 +64,8 @@ Outcome run_design(const Query& q, const std::atomic<bool>* interrupt, const Sta
     out.interrupted = out.search.interrupted;
   }
   if (!out.interrupted && !out.search.ranking.empty()) {
-    out.verified = verify(q.base, out.candidates.kept, out.search.ranking, q.target, q.top, q.verify_reps, interrupt,
-                          progress, out.interrupted);
+    out.verified = verify(q.base, out.candidates.kept, out.search.ranking, q.target, q.top, q.verify, interrupt, progress,
+                          out.interrupted);
     for (const auto& v : out.verified) out.feasible = out.feasible || v.meets_target;
   }
   out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

@@ -21,7 +21,7 @@ struct Query {
   bool class_prune = true;  // with a mu_d target: prune contact-fraction classes first (classes.hpp)
   ClassOptions classes;
   int top = 5;            // candidates verified and reported
-  int verify_reps = 10;   // fresh full repetitions of each
+  VerifyOptions verify;   // fresh full repetitions of each, added until resolved
 };
 
 // Throws InputError naming the field for bad bounds, an empty target, or counts out of range.

@@ -41,6 +41,9 @@ nlohmann::json verified_json(const Outcome& o, const Verified& v) {
   j["meets_target"] = v.meets_target;
   j["score"] = json_number(v.score);
   j["screening_rank"] = v.screening_rank;
+  j["reps"] = v.reps;
+  j["half_width"] = json_number(v.half_width);
+  j["resolved"] = v.resolved;
   j["screening"] = {{"mu_s", e.stat(Quantity::MuS)}, {"mu_d", e.stat(Quantity::MuD)}, {"reps", e.reps}};
   return j;
 }
@@ -83,7 +86,9 @@ nlohmann::json search_json(const Query& q, const Outcome& o) {
                           {"dropped_feature", c.dropped_feature}, {"dropped_same_mask", c.dropped_duplicate}}},
           {"contact_classes", classes_json(q, o)},
           {"rungs", rungs},
-          {"verify_reps", q.verify_reps},
+          {"verify_reps", q.verify.reps},
+          {"verify_max_reps", q.verify.max_reps},
+          {"resolution", q.verify.resolution},
           {"verify_seed", stage_seed(q.base.seed, kVerifyStage)}};
 }
 
@@ -111,6 +116,13 @@ std::string meets_rule() {
          "(a point target: |mean - target| <= 2 SEM)";
 }
 
+std::string order_rule() {
+  return "answers ordered by score, the fresh estimate's distance to the target (with a goal, then its objective; "
+         "lower first); repetitions doubled "
+         "while a distance is unresolved: resolved when every constrained quantity's [mean - 2 SEM, mean + 2 SEM] "
+         "lies wholly inside or outside its interval, or 2 SEM <= the resolution";
+}
+
 nlohmann::json design_json(const Query& q, const Outcome& o, const std::string& command_line) {
   nlohmann::json best = nlohmann::json::array();
   for (const auto& v : o.verified) best.push_back(verified_json(o, v));
@@ -126,6 +138,7 @@ nlohmann::json design_json(const Query& q, const Outcome& o, const std::string& 
   nlohmann::json j = {{"feasible", o.feasible},
                       {"best", best},
                       {"rule", meets_rule()},
+                      {"order", order_rule()},
                       {"target", target_json(q.target)},
                       {"search", search_json(q, o)},
                       {"evaluated", evaluated_json(o)},

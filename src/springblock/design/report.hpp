@@ -22,6 +22,8 @@ nlohmann::json design_json(const Query& q, const Outcome& o, const std::string& 
 std::string infeasible_reason(const Query& q, const Outcome& o);
 
 // The text of the meets-target rule, as recorded in the JSON.
+// How the answers are ordered and when their repetitions stop (verify.hpp), in words.
+std::string order_rule();
 std::string meets_rule();
 
 }  // namespace sb::design

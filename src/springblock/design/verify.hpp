@@ -18,14 +18,32 @@ struct Verified {
   bool meets_target = false;  // every interval met by the rule of target.hpp (meets)
   double score = 0;           // target.hpp's score of the fresh means
   double wall_s = 0;
+  int reps = 0;               // fresh repetitions run
+  double half_width = 0;      // the largest 2 SEM over the quantities the target constrains
+  bool resolved = false;      // see resolved()
 };
 
-// Re-runs the first `count` of `ranking` with `reps` fresh full repetitions each, in one pool.
-// The result keeps the screening order, except that candidates meeting the target come first
-// (stable): the choice among them uses the fresh data only through that yes/no.
+// How many fresh repetitions a finalist gets: `reps` first, then twice as many, and so on while
+// its distance to the target is not resolved, up to `max_reps`. `resolution`: the 2 SEM at which a
+// distance counts as resolved even when the estimate straddles an interval's edge.
+struct VerifyOptions {
+  int reps = 10;
+  int max_reps = 80;
+  double resolution = 0.002;
+};
+
+// A finalist's distance to the target is resolved when, for every quantity the target
+// constrains, its fresh estimate's two-standard-error interval lies wholly inside the target
+// interval or wholly outside it (whether it meets is then not in doubt), or is no wider than
+// 2 x resolution on each side (the distance is then known to that precision).
+bool resolved(const Target& t, const Verified& v, double resolution);
+
+// Re-runs the first `count` of `ranking` on fresh full repetitions (VerifyOptions), in one pool per
+// round. The result is ordered by the fresh score (the distance to the target printed beside each
+// answer; screening order on ties).
 std::vector<Verified> verify(const Scene& base, const std::vector<Candidate>& candidates, const std::vector<int>& ranking,
-                             const Target& target, int count, int reps, const std::atomic<bool>* interrupt,
-                             const StageProgress& progress, bool& interrupted);
+                             const Target& target, int count, const VerifyOptions& options,
+                             const std::atomic<bool>* interrupt, const StageProgress& progress, bool& interrupted);
 
 bool meets_target(const Target& t, const Statistic& mu_s, const Statistic& mu_d, const Statistic& ratio);
 
