@@ -62,6 +62,8 @@ void ActiveSet::rebuild(const Chain& c, const State& s) {
   for (const Run& r : runs_)
     if (r.kind == kSettled) drop_old(r);
   runs_.clear();
+  list_.live.clear();
+  list_.settling = {};
   find_runs(c, s, 0, N(), runs_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
   modal_.clear();
@@ -145,6 +147,7 @@ ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uin
 void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
   r.kind = kind;
   std::fill(kind_.begin() + r.span.lo, kind_.begin() + r.span.hi, kind);
+  track(r);
   if (kind == kSettled) {
     if (store_.owner(r.span.lo) != RunStore::kSettled || store_.exact(r.span) == nullptr)
       store_.project(c, r.span, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kSettled, false);
@@ -152,12 +155,35 @@ void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
   }
   if (kind != kModal) return;
   modal_.add(c, s, r.span.lo, r.span.hi, r.grooves);
+  if (r.grooves && modal_.settled_after(r.span.lo) < kInf) list_.settling.push({modal_.settled_after(r.span.lo), r.span.lo});
   set_fresh(r.span);
 }
 
 void ActiveSet::drop_old(const Run& r) {
   if (r.kind == kModal) modal_.drop(r.span.lo);
   else if (r.kind == kSettled && store_.owner(r.span.lo) == RunStore::kSettled) store_.drop(r.span.lo);
+}
+
+void ActiveSet::track(const Run& r) {
+  const bool live = r.kind == kStepped;
+  const auto at = std::lower_bound(list_.live.begin(), list_.live.end(), r.span.lo);
+  const bool held = at != list_.live.end() && *at == r.span.lo;
+  if (live && !held) list_.live.insert(at, r.span.lo);
+  else if (!live && held) list_.live.erase(at);
+}
+
+void ActiveSet::untrack(int lo, int hi) {
+  const auto first = std::lower_bound(list_.live.begin(), list_.live.end(), lo);
+  list_.live.erase(first, std::lower_bound(first, list_.live.end(), hi));
+}
+
+bool ActiveSet::settling(const std::pair<double, int>& e) const {
+  const int lo = e.second;
+  return kind_[lo] == kModal && modal_.run_start(lo) == lo && modal_.settled_after(lo) == e.first;
+}
+
+ActiveSet::Run& ActiveSet::run_at(int lo) {
+  return *std::lower_bound(runs_.begin(), runs_.end(), lo, [](const Run& r, int i) { return r.span.lo < i; });
 }
 
 void ActiveSet::set_fresh(BlockRange r) {
@@ -175,10 +201,10 @@ void ActiveSet::list_stepped(const State& s) {
   list_.watched.clear();
   list_.ringing.clear();
   list_.next_promotion = kInf;
-  for (std::size_t k = 0; k < runs_.size(); ++k) {
-    const Run& r = runs_[k];
+  for (int lo : list_.live) {
+    const Run& r = run_at(lo);
     if (r.kind != kStepped) continue;
-    if (r.grooves) list_.ringing.push_back(static_cast<int>(k));
+    if (r.grooves) list_.ringing.push_back(static_cast<int>(&r - runs_.data()));
     else if (r.span.hi - r.span.lo <= rules_.modal_max) list_.next_promotion = std::min(list_.next_promotion, r.formed + rules_.promote_age);
     list_.stepped.push_back(r.span);
     // In block order; a stuck block between two stepped runs is listed once.
