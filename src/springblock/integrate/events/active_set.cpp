@@ -217,8 +217,10 @@ void ActiveSet::list_stepped(const State& s) {
 }
 
 void ActiveSet::materialise(double t, double* u, double* v, bool at_sample, bool ends_only) {
+  // A settled run is grooves only, so ends_only leaves its interior rows as they are, as for a
+  // modal groove run (materialise_near writes a whole run before a switch reads it).
   for (const Run& r : runs_)
-    if (r.kind == kSettled) store_.write_path(store_.run(r.span.lo), t, u, v);
+    if (r.kind == kSettled) store_.write_path(store_.run(r.span.lo), t, u, v, ends_only);
   if (any_modal()) modal_.materialise(t, u, v, at_sample, ends_only);
 }
 
@@ -228,9 +230,13 @@ void ActiveSet::materialise_near(double t, double* u, double* v, const std::vect
     for (int j = b - 1; j <= b + 1; ++j) {
       if (j < 0 || j >= N()) continue;
       if (kind_[j] == kSettled) {
-        // The whole run: it may merge into a new run that is stepped or projected from s.u.
-        if (u[j] == store_.path_u(j, t) && v[j] == store_.B(j)) continue;  // written already
+        // The whole run: it may merge into a new run that is stepped or projected from s.u. Its
+        // end rows being current says nothing of its interior (a sample writes only the ends),
+        // so only a run written in this call is skipped.
+        const int lo = store_.run(j).lo;
+        if (std::find(work_.done.begin(), work_.done.end(), lo) != work_.done.end()) continue;
         store_.write_path(store_.run(j), t, u, v);
+        work_.done.push_back(lo);
       } else if (kind_[j] == kModal) {
         const int lo = modal_.run_start(j);
         if (std::find(work_.done.begin(), work_.done.end(), lo) != work_.done.end()) continue;  // a few runs at most

@@ -228,7 +228,7 @@ class ActiveSet {
   // update()'s work lists.
   struct Work {
     std::vector<int> pending;         // blocks whose modal search is due
-    std::vector<int> done;            // materialise_near: modal runs written (first blocks)
+    std::vector<int> done;            // materialise_near: modal and settled runs written (first blocks)
     std::vector<int> cand;            // blocks whose event time may have changed
     std::vector<int> switched;        // the switched blocks in block order
     std::vector<BlockRange> regions;  // the stretches renewed, in block order
