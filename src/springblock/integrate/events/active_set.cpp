@@ -63,6 +63,7 @@ void ActiveSet::rebuild(const Chain& c, const State& s) {
     if (r.kind == kSettled) drop_old(r);
   runs_.clear();
   list_.live.clear();
+  list_.live_grooves.clear();
   list_.settling = {};
   find_runs(c, s, 0, N(), runs_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
@@ -164,17 +165,31 @@ void ActiveSet::drop_old(const Run& r) {
   else if (r.kind == kSettled && store_.owner(r.span.lo) == RunStore::kSettled) store_.drop(r.span.lo);
 }
 
+namespace {
+
+// lo in or out of the sorted list.
+void keep_listed(std::vector<int>& list, int lo, bool in) {
+  const auto at = std::lower_bound(list.begin(), list.end(), lo);
+  const bool held = at != list.end() && *at == lo;
+  if (in && !held) list.insert(at, lo);
+  else if (!in && held) list.erase(at);
+}
+
+void unlist(std::vector<int>& list, int lo, int hi) {
+  const auto first = std::lower_bound(list.begin(), list.end(), lo);
+  list.erase(first, std::lower_bound(first, list.end(), hi));
+}
+
+}  // namespace
+
 void ActiveSet::track(const Run& r) {
-  const bool live = r.kind == kStepped;
-  const auto at = std::lower_bound(list_.live.begin(), list_.live.end(), r.span.lo);
-  const bool held = at != list_.live.end() && *at == r.span.lo;
-  if (live && !held) list_.live.insert(at, r.span.lo);
-  else if (!live && held) list_.live.erase(at);
+  keep_listed(list_.live, r.span.lo, r.kind == kStepped);
+  if (r.grooves) keep_listed(list_.live_grooves, r.span.lo, r.kind == kStepped);
 }
 
 void ActiveSet::untrack(int lo, int hi) {
-  const auto first = std::lower_bound(list_.live.begin(), list_.live.end(), lo);
-  list_.live.erase(first, std::lower_bound(first, list_.live.end(), hi));
+  unlist(list_.live, lo, hi);
+  unlist(list_.live_grooves, lo, hi);
 }
 
 bool ActiveSet::settling(const std::pair<double, int>& e) const {
@@ -182,8 +197,14 @@ bool ActiveSet::settling(const std::pair<double, int>& e) const {
   return kind_[lo] == kModal && modal_.run_start(lo) == lo && modal_.settled_after(lo) == e.first;
 }
 
-ActiveSet::Run& ActiveSet::run_at(int lo) {
-  return *std::lower_bound(runs_.begin(), runs_.end(), lo, [](const Run& r, int i) { return r.span.lo < i; });
+ActiveSet::Run& ActiveSet::seek(std::size_t& cursor, int lo) {
+  std::size_t step = 1;
+  while (cursor + step < runs_.size() && runs_[cursor + step].span.lo < lo) step *= 2;
+  const auto first = runs_.begin() + static_cast<std::ptrdiff_t>(cursor + step / 2);
+  const auto last = runs_.begin() + static_cast<std::ptrdiff_t>(std::min(cursor + step + 1, runs_.size()));
+  const auto at = std::lower_bound(first, last, lo, [](const Run& r, int i) { return r.span.lo < i; });
+  cursor = static_cast<std::size_t>(at - runs_.begin());
+  return *at;
 }
 
 void ActiveSet::set_fresh(BlockRange r) {
@@ -201,9 +222,8 @@ void ActiveSet::list_stepped(const State& s) {
   list_.watched.clear();
   list_.ringing.clear();
   list_.next_promotion = kInf;
-  for (int lo : list_.live) {
-    const Run& r = run_at(lo);
-    if (r.kind != kStepped) continue;
+  auto list = [&](const Run& r) {
+    if (r.kind != kStepped) return;
     if (r.grooves) list_.ringing.push_back(static_cast<int>(&r - runs_.data()));
     else if (r.span.hi - r.span.lo <= rules_.modal_max) list_.next_promotion = std::min(list_.next_promotion, r.formed + rules_.promote_age);
     list_.stepped.push_back(r.span);
@@ -213,6 +233,14 @@ void ActiveSet::list_stepped(const State& s) {
     for (int i = r.span.lo; i < r.span.hi; ++i)
       if (s.dir[i] != 0) list_.watched.push_back(i);
     if (rules_.K_int > 0 && r.span.hi < N()) list_.watched.push_back(r.span.hi);
+  };
+  // The same runs in the same order either way: a pass over every run where most are stepped (a
+  // smooth chain), the stepped ones sought where they are few among settled and modal runs.
+  if (2 * list_.live.size() >= runs_.size()) {
+    for (const Run& r : runs_) list(r);
+  } else {
+    std::size_t cursor = 0;
+    for (int lo : list_.live) list(seek(cursor, lo));
   }
 }
 

@@ -172,8 +172,10 @@ class ActiveSet {
   void track(const Run& r);
   void untrack(int lo, int hi);
   bool settling(const std::pair<double, int>& e) const;
-  // The run starting at block lo (one of runs_).
-  Run& run_at(int lo);
+  // The run starting at block lo (one of runs_), sought from a cursor (an index into runs_ at or
+  // before it, moved to it) for increasing lo: O(1) when the runs sought lie close together, as
+  // the stepped runs of a smooth chain do, O(log gap) otherwise.
+  Run& seek(std::size_t& cursor, int lo);
   // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
   void update_crossing(const Chain& c, const State& s, int i);
   // The event time of stuck block i when it needs no modal search (watched: none here;
@@ -212,6 +214,7 @@ class ActiveSet {
     // First blocks of the stepped runs, in block order: list_stepped, retime_grooves and
     // promote_runs pass over these, not over every run.
     std::vector<int> live;
+    std::vector<int> live_grooves;  // those of them that are grooves only (ringing)
     // The modal grooves-only runs by the time their transient is gone (settled_after, first
     // block), earliest on top: outside the renewed regions such a run changes kind only then, so
     // retime_grooves visits those due. An entry whose run has gone or was projected again is stale

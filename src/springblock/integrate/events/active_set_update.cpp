@@ -77,15 +77,14 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
 }
 
 // Outside the regions only a grooves-only run that is modal or ringing can change kind, with time.
-// A ringing one is stepped (list_.live). A modal one outside the regions has nothing in or beside
+// A ringing one is stepped (list_.live_grooves). A modal one outside the regions has nothing in or beside
 // it switched and is the run modal_ holds, so classify() keeps it modal until s.t reaches its
 // settled_after: only those due (list_.settling) are visited. In block order, as a pass over
 // every run would visit them.
 void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched) {
   work_.retimed.clear();
   work_.visit.clear();
-  for (int lo : list_.live)
-    if (run_at(lo).grooves) work_.visit.push_back(lo);
+  work_.visit.assign(list_.live_grooves.begin(), list_.live_grooves.end());
   work_.due.clear();
   while (!list_.settling.empty() && list_.settling.top().first <= s.t) {
     if (settling(list_.settling.top())) work_.due.push_back(list_.settling.top()), work_.visit.push_back(list_.settling.top().second);
@@ -94,8 +93,9 @@ void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_
   std::sort(work_.visit.begin(), work_.visit.end());
   work_.visit.erase(std::unique(work_.visit.begin(), work_.visit.end()), work_.visit.end());
   std::size_t g = 0;  // the first region not before the run
+  std::size_t cursor = 0;
   for (int lo : work_.visit) {
-    Run& r = run_at(lo);
+    Run& r = seek(cursor, lo);
     while (g < work_.regions.size() && work_.regions[g].hi <= r.span.lo) ++g;
     if (g < work_.regions.size() && work_.regions[g].lo <= r.span.lo) continue;  // renewed
     if (!r.grooves || (r.kind != kModal && r.kind != kStepped)) continue;
