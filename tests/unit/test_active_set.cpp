@@ -219,4 +219,44 @@ TEST(ActiveSet, ShortRunsAreSteppedUntilTheyOutlastASlip) {
   EXPECT_EQ(a.next_promotion(), s.t + a.promote_age());
 }
 
+TEST(ActiveSet, ModalGrooveFarFromASwitchSettlesAtTheFirstSwitchAfterItsTransientIsGone) {
+  // A switch renews only the runs beside it; a modal grooves-only run elsewhere changes kind with
+  // time alone: it stays modal at a switch before its transient has died and is settled at the
+  // first switch after, though nothing in or beside it switched.
+  const sb::Chain c = grooved(1e4);
+  sb::State s = sb::State::at_rest(c);
+  s.t = 0.01;
+  settle_grooves(c, s);
+  s.v[3] += 100 * kAtolV;  // groove 3-4 rings
+  s.dir[1] = 1;            // block 1 slides, pawl blocks 0 and 2 stuck around it
+  s.v[1] = 0.1 * c.v_slider;
+  sb::event_detail::RunStore a_store(c);
+  ActiveSet a(c, a_store, true, kAtolU, kAtolV, 0, 64, 1.0);
+  a.rebuild(c, s);
+  ASSERT_EQ(a.kind(3), ActiveSet::kModal);
+  ASSERT_EQ(a.kind(1), ActiveSet::kStepped);
+  std::vector<std::uint8_t> touched(c.N, 0);
+  auto switch_block_1 = [&](double t, std::int8_t dir) {
+    s.t = t;
+    s.dir[1] = dir;
+    s.v[1] = dir != 0 ? 0.1 * c.v_slider : 0.0;
+    touched[1] = 1;
+    a.update(c, s, touched.data(), {1});
+    touched[1] = 0;
+  };
+  // Block 1 stops 0.1 us later: the groove's transient (decay rate gamma / 2) is still there.
+  switch_block_1(0.01 + 1e-7, 0);
+  EXPECT_EQ(a.kind(3), ActiveSet::kModal);
+  EXPECT_EQ(a.kind(4), ActiveSet::kModal);
+  EXPECT_TRUE(a.stepped().empty());
+  // It starts again 50 ms later, long after the transient fell below the settle scales.
+  switch_block_1(0.06, 1);
+  EXPECT_EQ(a.kind(3), ActiveSet::kSettled);
+  EXPECT_EQ(a.kind(4), ActiveSet::kSettled);
+  ASSERT_EQ(a.stepped().size(), 1u);
+  EXPECT_EQ(a.stepped()[0].lo, 1);
+  EXPECT_EQ(a.stepped()[0].hi, 2);
+  EXPECT_EQ(a.watched(), (std::vector<int>{0, 1, 2}));
+}
+
 }  // namespace

@@ -62,6 +62,9 @@ void ActiveSet::rebuild(const Chain& c, const State& s) {
   for (const Run& r : runs_)
     if (r.kind == kSettled) drop_old(r);
   runs_.clear();
+  list_.live.clear();
+  list_.live_grooves.clear();
+  list_.settling = {};
   find_runs(c, s, 0, N(), runs_);
   std::fill(kind_.begin(), kind_.end(), kStuck);
   modal_.clear();
@@ -145,6 +148,7 @@ ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uin
 void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
   r.kind = kind;
   std::fill(kind_.begin() + r.span.lo, kind_.begin() + r.span.hi, kind);
+  track(r);
   if (kind == kSettled) {
     if (store_.owner(r.span.lo) != RunStore::kSettled || store_.exact(r.span) == nullptr)
       store_.project(c, r.span, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kSettled, false);
@@ -152,12 +156,55 @@ void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
   }
   if (kind != kModal) return;
   modal_.add(c, s, r.span.lo, r.span.hi, r.grooves);
+  if (r.grooves && modal_.settled_after(r.span.lo) < kInf) list_.settling.push({modal_.settled_after(r.span.lo), r.span.lo});
   set_fresh(r.span);
 }
 
 void ActiveSet::drop_old(const Run& r) {
   if (r.kind == kModal) modal_.drop(r.span.lo);
   else if (r.kind == kSettled && store_.owner(r.span.lo) == RunStore::kSettled) store_.drop(r.span.lo);
+}
+
+namespace {
+
+// lo in or out of the sorted list.
+void keep_listed(std::vector<int>& list, int lo, bool in) {
+  const auto at = std::lower_bound(list.begin(), list.end(), lo);
+  const bool held = at != list.end() && *at == lo;
+  if (in && !held) list.insert(at, lo);
+  else if (!in && held) list.erase(at);
+}
+
+void unlist(std::vector<int>& list, int lo, int hi) {
+  const auto first = std::lower_bound(list.begin(), list.end(), lo);
+  list.erase(first, std::lower_bound(first, list.end(), hi));
+}
+
+}  // namespace
+
+void ActiveSet::track(const Run& r) {
+  keep_listed(list_.live, r.span.lo, r.kind == kStepped);
+  if (r.grooves) keep_listed(list_.live_grooves, r.span.lo, r.kind == kStepped);
+}
+
+void ActiveSet::untrack(int lo, int hi) {
+  unlist(list_.live, lo, hi);
+  unlist(list_.live_grooves, lo, hi);
+}
+
+bool ActiveSet::settling(const std::pair<double, int>& e) const {
+  const int lo = e.second;
+  return kind_[lo] == kModal && modal_.run_start(lo) == lo && modal_.settled_after(lo) == e.first;
+}
+
+ActiveSet::Run& ActiveSet::seek(std::size_t& cursor, int lo) {
+  std::size_t step = 1;
+  while (cursor + step < runs_.size() && runs_[cursor + step].span.lo < lo) step *= 2;
+  const auto first = runs_.begin() + static_cast<std::ptrdiff_t>(cursor + step / 2);
+  const auto last = runs_.begin() + static_cast<std::ptrdiff_t>(std::min(cursor + step + 1, runs_.size()));
+  const auto at = std::lower_bound(first, last, lo, [](const Run& r, int i) { return r.span.lo < i; });
+  cursor = static_cast<std::size_t>(at - runs_.begin());
+  return *at;
 }
 
 void ActiveSet::set_fresh(BlockRange r) {
@@ -175,10 +222,9 @@ void ActiveSet::list_stepped(const State& s) {
   list_.watched.clear();
   list_.ringing.clear();
   list_.next_promotion = kInf;
-  for (std::size_t k = 0; k < runs_.size(); ++k) {
-    const Run& r = runs_[k];
-    if (r.kind != kStepped) continue;
-    if (r.grooves) list_.ringing.push_back(static_cast<int>(k));
+  auto list = [&](const Run& r) {
+    if (r.kind != kStepped) return;
+    if (r.grooves) list_.ringing.push_back(static_cast<int>(&r - runs_.data()));
     else if (r.span.hi - r.span.lo <= rules_.modal_max) list_.next_promotion = std::min(list_.next_promotion, r.formed + rules_.promote_age);
     list_.stepped.push_back(r.span);
     // In block order; a stuck block between two stepped runs is listed once.
@@ -187,12 +233,22 @@ void ActiveSet::list_stepped(const State& s) {
     for (int i = r.span.lo; i < r.span.hi; ++i)
       if (s.dir[i] != 0) list_.watched.push_back(i);
     if (rules_.K_int > 0 && r.span.hi < N()) list_.watched.push_back(r.span.hi);
+  };
+  // The same runs in the same order either way: a pass over every run where most are stepped (a
+  // smooth chain), the stepped ones sought where they are few among settled and modal runs.
+  if (2 * list_.live.size() >= runs_.size()) {
+    for (const Run& r : runs_) list(r);
+  } else {
+    std::size_t cursor = 0;
+    for (int lo : list_.live) list(seek(cursor, lo));
   }
 }
 
 void ActiveSet::materialise(double t, double* u, double* v, bool at_sample, bool ends_only) {
+  // A settled run is grooves only, so ends_only leaves its interior rows as they are, as for a
+  // modal groove run (materialise_near writes a whole run before a switch reads it).
   for (const Run& r : runs_)
-    if (r.kind == kSettled) store_.write_path(store_.run(r.span.lo), t, u, v);
+    if (r.kind == kSettled) store_.write_path(store_.run(r.span.lo), t, u, v, ends_only);
   if (any_modal()) modal_.materialise(t, u, v, at_sample, ends_only);
 }
 
@@ -202,9 +258,13 @@ void ActiveSet::materialise_near(double t, double* u, double* v, const std::vect
     for (int j = b - 1; j <= b + 1; ++j) {
       if (j < 0 || j >= N()) continue;
       if (kind_[j] == kSettled) {
-        // The whole run: it may merge into a new run that is stepped or projected from s.u.
-        if (u[j] == store_.path_u(j, t) && v[j] == store_.B(j)) continue;  // written already
+        // The whole run: it may merge into a new run that is stepped or projected from s.u. Its
+        // end rows being current says nothing of its interior (a sample writes only the ends),
+        // so only a run written in this call is skipped.
+        const int lo = store_.run(j).lo;
+        if (std::find(work_.done.begin(), work_.done.end(), lo) != work_.done.end()) continue;
         store_.write_path(store_.run(j), t, u, v);
+        work_.done.push_back(lo);
       } else if (kind_[j] == kModal) {
         const int lo = modal_.run_start(j);
         if (std::find(work_.done.begin(), work_.done.end(), lo) != work_.done.end()) continue;  // a few runs at most

@@ -36,6 +36,8 @@
 #include <limits>
 #include <map>
 #include <tuple>
+#include <queue>
+#include <utility>
 #include <vector>
 
 #include "springblock/integrate/block_range.hpp"
@@ -165,6 +167,15 @@ class ActiveSet {
   void renew_borders(const Chain& c, const State& s, BlockRange r);
   // Run r leaves the classification: its modal run or settled record is let go.
   void drop_old(const Run& r);
+  // list_.live after run r took its kind (assign), and with the runs in [lo, hi) gone.
+  // settling(e): entry e of list_.settling still names a modal grooves-only run.
+  void track(const Run& r);
+  void untrack(int lo, int hi);
+  bool settling(const std::pair<double, int>& e) const;
+  // The run starting at block lo (one of runs_), sought from a cursor (an index into runs_ at or
+  // before it, moved to it) for increasing lo: O(1) when the runs sought lie close together, as
+  // the stepped runs of a smooth chain do, O(log gap) otherwise.
+  Run& seek(std::size_t& cursor, int lo);
   // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
   void update_crossing(const Chain& c, const State& s, int i);
   // The event time of stuck block i when it needs no modal search (watched: none here;
@@ -200,6 +211,15 @@ class ActiveSet {
     std::vector<BlockRange> stepped;
     std::vector<int> watched;
     std::vector<int> ringing;
+    // First blocks of the stepped runs, in block order: list_stepped, retime_grooves and
+    // promote_runs pass over these, not over every run.
+    std::vector<int> live;
+    std::vector<int> live_grooves;  // those of them that are grooves only (ringing)
+    // The modal grooves-only runs by the time their transient is gone (settled_after, first
+    // block), earliest on top: outside the renewed regions such a run changes kind only then, so
+    // retime_grooves visits those due. An entry whose run has gone or was projected again is stale
+    // (its block no longer starts a modal run with that time) and is skipped.
+    std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> settling;
     double next_promotion = std::numeric_limits<double>::infinity();
   };
   // The runs projected afresh at this classification: per block, and the runs (to clear the
@@ -211,12 +231,14 @@ class ActiveSet {
   // update()'s work lists.
   struct Work {
     std::vector<int> pending;         // blocks whose modal search is due
-    std::vector<int> done;            // materialise_near: modal runs written (first blocks)
+    std::vector<int> done;            // materialise_near: modal and settled runs written (first blocks)
     std::vector<int> cand;            // blocks whose event time may have changed
     std::vector<int> switched;        // the switched blocks in block order
     std::vector<BlockRange> regions;  // the stretches renewed, in block order
     std::vector<BlockRange> retimed;  // runs outside them whose kind changed with time
     std::vector<Run> found;           // the runs found in one region
+    std::vector<int> visit;           // a copy of list_.live to walk while assign() edits it
+    std::vector<std::pair<double, int>> due;  // retime_grooves: settling entries taken off
   };
   int N() const { return static_cast<int>(kind_.size()); }
 

@@ -154,7 +154,10 @@ void ActiveSet::renew_borders(const Chain& c, const State& s, BlockRange r) {
 bool ActiveSet::promote_runs(const Chain& c, const State& s) {
   if (!(s.t >= list_.next_promotion)) return false;
   bool changed = false;
-  for (Run& r : runs_) {
+  work_.visit.assign(list_.live.begin(), list_.live.end());
+  std::size_t cursor = 0;
+  for (int lo : work_.visit) {
+    Run& r = seek(cursor, lo);
     if (r.kind != kStepped || r.grooves || r.span.hi - r.span.lo > rules_.modal_max || s.t < r.formed + rules_.promote_age)
       continue;
     // As a classification would treat a run that becomes modal: projected afresh (fresh_.block), its

@@ -70,16 +70,32 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
     if (!kept) drop_old(*it);
   }
   std::fill(kind_.begin() + region.lo, kind_.begin() + region.hi, kStuck);
+  untrack(region.lo, region.hi);
   for (Run& r : work_.found) assign(c, s, r, r.kind);
   const auto at = runs_.erase(first, last);
   runs_.insert(at, work_.found.begin(), work_.found.end());
 }
 
 // Outside the regions only a grooves-only run that is modal or ringing can change kind, with time.
+// A ringing one is stepped (list_.live_grooves). A modal one outside the regions has nothing in or beside
+// it switched and is the run modal_ holds, so classify() keeps it modal until s.t reaches its
+// settled_after: only those due (list_.settling) are visited. In block order, as a pass over
+// every run would visit them.
 void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched) {
   work_.retimed.clear();
+  work_.visit.clear();
+  work_.visit.assign(list_.live_grooves.begin(), list_.live_grooves.end());
+  work_.due.clear();
+  while (!list_.settling.empty() && list_.settling.top().first <= s.t) {
+    if (settling(list_.settling.top())) work_.due.push_back(list_.settling.top()), work_.visit.push_back(list_.settling.top().second);
+    list_.settling.pop();
+  }
+  std::sort(work_.visit.begin(), work_.visit.end());
+  work_.visit.erase(std::unique(work_.visit.begin(), work_.visit.end()), work_.visit.end());
   std::size_t g = 0;  // the first region not before the run
-  for (Run& r : runs_) {
+  std::size_t cursor = 0;
+  for (int lo : work_.visit) {
+    Run& r = seek(cursor, lo);
     while (g < work_.regions.size() && work_.regions[g].hi <= r.span.lo) ++g;
     if (g < work_.regions.size() && work_.regions[g].lo <= r.span.lo) continue;  // renewed
     if (!r.grooves || (r.kind != kModal && r.kind != kStepped)) continue;
@@ -89,6 +105,9 @@ void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_
     assign(c, s, r, kind);
     work_.retimed.push_back(r.span);
   }
+  // A due run still modal (in a renewed region, kept) is due again at the next switch.
+  for (const auto& e : work_.due)
+    if (settling(e)) list_.settling.push(e);
 }
 
 // Only blocks that switched, changed kind or were projected afresh, and their neighbours, can

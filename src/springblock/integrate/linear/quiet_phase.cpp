@@ -71,7 +71,7 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
     edges_.list.push_back(std::move(e));
   }
   interior_.a.resize(interior_.blocks.size());
-  edges_.order.resize(edges_.list.size());
+  edges_.order.reserve(edges_.list.size());
 }
 
 // Segment s's record at t0: kept where the active set holds it (a settled run is on its path, a
@@ -90,6 +90,22 @@ void QuietPhase::take_record(const Chain& c, const GrooveRun& s, const double* u
 // below 1e-17 of the segment's u and v scales they no longer change a double (dead_tau), and
 // below the sample scales they are dropped from samples (sample_dead_tau).
 void QuietPhase::set_dead_times(GrooveRun& s) const {
+  const RunStore::Run& rec = store_.run(s.first);
+  if (!rec.modes) {
+    // No modes (q0 = p0 = 0): the envelope is zero, so each time is 0 where its scales are
+    // positive and the modes decay, infinity otherwise, as time_below gives. Only whether the
+    // scales are positive is needed: the first nonzero row settles it, not a pass over all rows.
+    bool decays = rec.shape->n > 0;
+    for (const DampedMode& m : rec.shape->modes) decays = decays && m.alpha > 0 && m.s > 0;
+    bool u_pos = false, v_pos = false;
+    for (int i = s.first; i < s.first + s.n && !(u_pos && v_pos); ++i) {
+      u_pos = u_pos || 1e-17 * std::fabs(store_.path_u(i, t0_)) > 0;
+      v_pos = v_pos || 1e-17 * std::fabs(store_.B(i)) > 0;
+    }
+    s.dead_tau = decays && u_pos && v_pos ? 0.0 : kInf;
+    s.sample_dead_tau = std::min(s.dead_tau, decays && scales_.u > 0 && scales_.v > 0 ? 0.0 : kInf);
+    return;
+  }
   double uscale = 0, vscale = 0;
   for (int i = s.first; i < s.first + s.n; ++i) {
     uscale = std::max(uscale, std::fabs(store_.path_u(i, t0_)));
@@ -118,6 +134,8 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
       const double* row = s.shape->row(e.row[n]);
       const double k_nb = edges_.forces[x].k[n];
       b += k_nb * store_.B(s.first + e.row[n]);
+      // A record without modes has q0 = 0: its terms would subtract zeros.
+      if (!store_.run(s.first).modes) continue;
       for (int k = 0; k < s.n; ++k) a -= k_nb * row[k] * store_.q0()[s.first + k];
     }
     e.march.set_affine(a, b);
@@ -162,7 +180,10 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
     if (tau < best) best = tau, block = j;
   }
   // Search the edges likeliest to cross first first: each search stops at the best time so far.
-  // An edge whose segments have no modes (settled grooves) has an affine force: closed form.
+  // An edge whose segments have no modes (settled grooves) has an affine force: closed form, and
+  // it is not searched, so only the edges with modes are ordered (a search marches the same steps
+  // whatever its limit, so the order changes how early searches stop, not the crossing found).
+  edges_.order.clear();
   for (std::size_t k = 0; k < edges_.list.size(); ++k) {
     Edge& e = edges_.list[k];
     bool modes = false;
@@ -173,8 +194,13 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
       if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;
     } else {
       e.lower = e.march.lower_bound(store_.q0(), store_.p0(), c.f_static[e.block]);
+      edges_.order.push_back(static_cast<int>(k));
     }
-    edges_.order[k] = static_cast<int>(k);
+  }
+  // With no limit (best infinite) an affine edge's lower bound is not above it: search every edge.
+  if (!(best < kInf)) {
+    edges_.order.resize(edges_.list.size());
+    for (std::size_t k = 0; k < edges_.list.size(); ++k) edges_.order[k] = static_cast<int>(k);
   }
   std::sort(edges_.order.begin(), edges_.order.end(), [&](int x, int y) { return edges_.list[x].lower < edges_.list[y].lower; });
   for (int k : edges_.order) {

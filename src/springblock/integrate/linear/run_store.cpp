@@ -209,7 +209,11 @@ void RunStore::write(const Run& r, double t, const double* q, const double* p, d
   }
 }
 
-void RunStore::write_path(const Run& r, double t, double* u, double* v) const {
+void RunStore::write_path(const Run& r, double t, double* u, double* v, bool ends_only) const {
+  if (ends_only) {
+    for (int i : {r.lo, r.hi - 1}) u[i] = path_u(i, t), v[i] = B_[i];
+    return;
+  }
   for (int i = r.lo; i < r.hi; ++i) u[i] = path_u(i, t), v[i] = B_[i];
 }
 

@@ -82,7 +82,8 @@ class RunStore {
   // plus per-block offsets du, dv where given.
   void write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only = false,
              const double* du = nullptr, const double* dv = nullptr);
-  void write_path(const Run& r, double t, double* u, double* v) const;
+  // On its path (no modes): every row, or (ends_only) its first and last rows only.
+  void write_path(const Run& r, double t, double* u, double* v, bool ends_only = false) const;
   // u, v of run r's blocks at t by the closed form from its record.
   void write_at(const Run& r, double t, double* u, double* v);
   // Bounds that hold at every time after the projection, from each mode's energy at it (which
