@@ -53,7 +53,9 @@ TEST(EventAtSample, TheSampleSeesEveryRun) {
   for (std::size_t k = 0; k < exact.size(); ++k) {
     ASSERT_EQ(exact[k].t, dopri[k].t);
     seen_T = seen_T || exact[k].t == T;
-    if (exact[k].t == T) EXPECT_GT(exact[k].n_sliding, 1) << "block 0 should still slide at T";
+    if (exact[k].t == T) {
+      EXPECT_GT(exact[k].n_sliding, 1) << "block 0 should still slide at T";
+    }
     EXPECT_NEAR(exact[k].mu, dopri[k].mu, 1e-7) << "sample at t = " << exact[k].t;
   }
   EXPECT_TRUE(seen_T);
