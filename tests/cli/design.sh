@@ -13,7 +13,7 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail=0
 chain=(--N 60 --length 1.2cm)
-space=(--family periodic --max-np 12 --max-ng 12 --top 3 --verify-reps 6)
+space=(--family periodic --max-np 12 --max-ng 12 --top 3 --verify-reps 6 --verify-max-reps 24)
 
 # 1. The known surface: periodic:3,8 measured with `run` at 12 repetitions of its own seed.
 "$sb" run "${chain[@]}" --pattern periodic:3,8 --reps 12 --seed 41 --stop-after-mu-s true --json >"$dir/known.json" ||
