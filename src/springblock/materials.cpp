@@ -1,9 +1,9 @@
 #include "springblock/materials.hpp"
 
-#include <cstdio>
 #include <cstring>
 
 #include "springblock/errors.hpp"
+#include "springblock/fnv1a.hpp"
 #include "springblock/model.hpp"
 #include "springblock/scene.hpp"
 
@@ -102,21 +102,18 @@ BlockMechanics block_mechanics(const ResolvedMaterials& m, const Chain& c) {
 }
 
 std::string materials_hash(const ResolvedMaterials& m) {
-  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64 offset basis
-  auto add = [&](unsigned char byte) { h = (h ^ byte) * 1099511628211ull; };
+  Fnv1a64 h;
   for (int f = 0; f < kBlockFields; ++f) {
     if (m.column[f].empty()) continue;
-    for (const char* p = block_field_names()[f]; *p; ++p) add(static_cast<unsigned char>(*p));
-    add(0);
+    h.add(block_field_names()[f]);
+    h.add(0);
     for (double x : m.column[f]) {
       std::uint64_t bits;
       std::memcpy(&bits, &x, sizeof bits);
-      for (int b = 0; b < 8; ++b) add(static_cast<unsigned char>(bits >> (8 * b)));
+      for (int b = 0; b < 8; ++b) h.add(static_cast<unsigned char>(bits >> (8 * b)));
     }
   }
-  char text[24];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-  return text;
+  return h.hex();
 }
 
 }  // namespace sb

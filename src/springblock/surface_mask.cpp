@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "springblock/errors.hpp"
+#include "springblock/fnv1a.hpp"
 
 namespace sb {
 namespace {
@@ -144,12 +145,9 @@ std::string mask_digits(const std::vector<std::uint8_t>& mask) {
 }
 
 std::string mask_hash(const std::vector<std::uint8_t>& mask) {
-  // FNV-1a: a few lines, the same value on every platform and build (std::hash is not).
-  std::uint64_t h = 1469598103934665603ull;
-  for (auto m : mask) h = (h ^ static_cast<unsigned char>(m ? '1' : '0')) * 1099511628211ull;
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  Fnv1a64 h;  // of the digits mask_digits writes
+  for (auto m : mask) h.add(static_cast<unsigned char>(m ? '1' : '0'));
+  return h.hex();
 }
 
 std::string pattern_label(const PatternSpec& spec) {

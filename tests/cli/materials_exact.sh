@@ -9,7 +9,7 @@
 #      tol 1e-12 give each repetition's mu_s to 1e-4 relative: the modes against direct forces.
 #      The tolerance is Dormand-Prince's own: at tol 1e-11 it is 2e-4 from the exact value on one
 #      repetition (a peak inside a slip), at 1e-12 2e-5, converging on it.
-# A projection that forgets the masses' weights moves mu_s by up to 6e-2 and breaks 2.
+# A projection that forgets the masses' weights puts the two up to 6e-2 apart (relative) and breaks 2.
 # Usage: materials_exact.sh SPRINGBLOCK PYTHON
 set -u
 sb=$1

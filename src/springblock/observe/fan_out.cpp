@@ -23,13 +23,8 @@ void FanOut::record(View& v, const State& s) {
   v.switches = s.switches;
 }
 
-void FanOut::sample(const Chain& c, const State& s) { deal(s, [&](Observer& o) { o.sample(c, s); }); }
-
-void FanOut::sample_ringing(const Chain& c, const State& s, RingingForces& f) {
-  deal(s, [&](Observer& o) { o.sample_ringing(c, s, f); });
-}
-
-void FanOut::deal(const State& s, const std::function<void(Observer&)>& take) {
+template <class Take>
+void FanOut::deal(const State& s, Take take) {
   const long long k = index_of(s.t);
   for (auto& v : views_) {
     if (v.obs->wants_stop() || !within_(s.t, v.t_end) || k < v.next_k) continue;
@@ -37,6 +32,12 @@ void FanOut::deal(const State& s, const std::function<void(Observer&)>& take) {
     v.next_k = k + 1;
     record(v, s);
   }
+}
+
+void FanOut::sample(const Chain& c, const State& s) { deal(s, [&](Observer& o) { o.sample(c, s); }); }
+
+void FanOut::sample_ringing(const Chain& c, const State& s, RingingForces& f) {
+  deal(s, [&](Observer& o) { o.sample_ringing(c, s, f); });
 }
 
 void FanOut::switched(const Chain& c, const State& s, SwitchedBlocks blocks) {

@@ -63,8 +63,9 @@ class FanOut final : public Observer {
   long long index_of(double t) const;
   static long long end_index(const View& v, long long k0, long long k_stop, double dt);
   void record(View& v, const State& s);
-  // The sample at s.t to every view whose own run would take it.
-  void deal(const State& s, const std::function<void(Observer&)>& take);
+  // The sample at s.t to every view whose own run would take it (take(observer) hands it over).
+  template <class Take>
+  void deal(const State& s, Take take);
 
   std::vector<View> views_;
   double sample_dt_;

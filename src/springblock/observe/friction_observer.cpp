@@ -93,7 +93,10 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
   const bool per_block = !c.blocks.uniform();  // each block's own springs: Chain::driving_force
   for (const auto& [lo, hi] : contact_runs_) {
     if (per_block) {
-      for (int i = lo; i < hi; ++i) f[i] = c.driving_force(i, u, s.v.data(), s.t), n_sliding += dir[i] != 0;
+      for (int i = lo; i < hi; ++i) {
+        if (dir[i] == 0) f[i] = c.driving_force(i, u, s.v.data(), s.t);  // a sliding block's entry is not read
+        n_sliding += dir[i] != 0;
+      }
       continue;
     }
     const int first = std::max(lo, 1), last = std::min(hi, c.N - 1);

@@ -1,8 +1,8 @@
 // Friction sums over a quiet phase's samples in closed form: what an observer of mu(t), its peak
 // and its time averages needs from a stretch of samples, without visiting each one.
 //
-// Over samples tau_j = tau_0 + j dt a contact block's force is f = fa + fb tau + K_int (ringing
-// of the groove ends beside it). Where no f changes sign, sum_j |f| = sign(f) sum_j f, with
+// Over samples tau_j = tau_0 + j dt a contact block's force is f = fa + fb tau + the springs to the
+// groove ends beside it times their ringing. Where no f changes sign, sum_j |f| = sign(f) sum_j f, with
 // sum_j (fa + fb tau_j) = m fa + fb sum_j tau_j and the ringing's sums from the integrator. A
 // force keeps its sign while its affine part stays further from zero than the ringing can reach
 // (bounded from the stretch's first sample on), and an affine part is monotone, so checking the

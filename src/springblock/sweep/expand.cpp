@@ -1,9 +1,9 @@
 #include "springblock/sweep/expand.hpp"
 
-#include <cstdio>
 #include <map>
 
 #include "springblock/errors.hpp"
+#include "springblock/fnv1a.hpp"
 
 namespace sb::sweep {
 namespace {
@@ -75,13 +75,9 @@ std::vector<SweepScene> expand(const Spec& spec) {
 }
 
 std::string fingerprint(const std::vector<SweepScene>& scenes) {
-  // FNV-1a over the scenes' JSON: stable across builds and machines (unlike std::hash).
-  std::uint64_t h = 1469598103934665603ull;
-  for (const auto& s : scenes)
-    for (unsigned char c : nlohmann::json(s.scene).dump()) h = (h ^ c) * 1099511628211ull;
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  Fnv1a64 h;  // over the scenes' JSON
+  for (const auto& s : scenes) h.add(nlohmann::json(s.scene).dump());
+  return h.hex();
 }
 
 }  // namespace sb::sweep

@@ -100,7 +100,7 @@ double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans,
     if (f.side[side] == kNone) continue;
     const double k = c.spring_between(j, nb);
     switch (f.side[side]) {
-      case kNone: continue;
+      case kNone: break;  // skipped above: there is no block there, nor a spring
       case kSpan:
         F += k * ((fresh_at_start(nb) ? s.u[nb] : spans.u(nb, end)) - uj);
         if (slope) dF += k * (fresh_at_start(nb) ? s.v[nb] : spans.v(nb, end));
@@ -174,7 +174,7 @@ double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& s
     if (f.side[side] == kNone) continue;
     const double kj = c.spring_between(j, nb);
     switch (f.side[side]) {
-      case kNone: continue;
+      case kNone: continue;  // skipped above
       case kFixed: F[0] += kj * (s.u[nb] - uj); continue;
       case kSettled:
         F[0] += kj * (active.settled_u(nb, t0) - uj);
