@@ -88,9 +88,17 @@ sb::Scene run_scene(const RunArgs& a, CLI::App* cmd) {
 }
 
 const char* loading_end(const sb::Scene& scene) {
-  return scene.rules.peak_rule == sb::ExtractionRules::PeakRule::AllSlipped
-             ? "not every contact block slid"
-             : "mu(t) never fell peak_drop below its running maximum";
+  using R = sb::ExtractionRules::PeakRule;
+  switch (scene.rules.peak_rule) {
+    case R::Drop: return "mu(t) never fell peak_drop below its running maximum";
+    case R::SlidOrDrop: return "not every contact block slid, and mu(t) never fell peak_drop below its running maximum";
+    case R::SlidOrRelativeDrop:
+      return "not every contact block slid, and mu(t) never fell peak_drop_fraction below its running maximum";
+    case R::SlidOrEvent:
+      return "not every contact block slid, and no slip event moved peak_event_fraction of the contact blocks";
+    case R::AllSlipped: break;
+  }
+  return "not every contact block slid";
 }
 
 // Nothing measured is an error, not a result of NaNs: says why and returns true (exit 3, known

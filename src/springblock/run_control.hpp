@@ -27,18 +27,30 @@ Stepper parse_stepper(const std::string& text);  // throws InputError("stepper")
 
 // How the macroscopic coefficients are read off mu(t). See paper/choices.md.
 struct ExtractionRules {
-  // Where the loading phase ends; mu_s is the largest mu(t) reached before that moment.
+  // Where the loading phase ends; mu_s is the largest mu(t) reached up to that moment. The
+  // paper's "first load peak" leaves this open, so a family of readings is offered, each a
+  // property of one trajectory (paper/choices.md, "Reading mu_s").
   //  AllSlipped (default): when every contact block has slid at least once, i.e. the whole
   //    surface has moved. Precursor slips of a few blocks, however large their mu drop on a
   //    surface with few contacts, do not end it.
   //  Drop: when mu(t) first falls `peak_drop` below its running maximum. Simple, but on
   //    surfaces with few contact blocks a precursor of 2-5 blocks already drops mu by 0.05.
-  enum class PeakRule { AllSlipped, Drop } peak_rule = PeakRule::AllSlipped;
+  //  The SlidOr* rules end it at AllSlipped's moment or earlier, at the first sample where
+  //    SlidOrDrop:          mu(t) < running max - peak_drop;
+  //    SlidOrRelativeDrop:  mu(t) < (1 - peak_drop_fraction) running max;
+  //    SlidOrEvent:         one slip event has moved at least peak_event_fraction of the
+  //                         contact blocks (a large detachment, not a precursor).
+  enum class PeakRule { AllSlipped, Drop, SlidOrDrop, SlidOrRelativeDrop, SlidOrEvent };
+  PeakRule peak_rule = PeakRule::AllSlipped;
   double peak_drop = 0.05;
+  double peak_drop_fraction = 0.1;
+  double peak_event_fraction = 0.5;
   // mu_d averages mu(t) from (first macroscopic slip + skip) to the end of the run,
   // skip in units of the loading time t0 (see RunControl).
   double mu_d_skip_t0 = 0.25;
 };
+std::string peak_rule_name(ExtractionRules::PeakRule r);
+ExtractionRules::PeakRule parse_peak_rule(const std::string& text);  // throws InputError("peak_rule")
 
 struct RunControl {
   // The event method by default: it locates every stick/slip switch instead of resolving it to

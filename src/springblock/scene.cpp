@@ -26,6 +26,33 @@ Stepper parse_stepper(const std::string& text) {
   throw InputError("stepper", "'" + text + "' is not one of: exact, dopri5");
 }
 
+namespace {
+struct PeakRuleName {
+  ExtractionRules::PeakRule rule;
+  const char* name;
+};
+constexpr PeakRuleName kPeakRules[] = {{ExtractionRules::PeakRule::AllSlipped, "all_slipped"},
+                                       {ExtractionRules::PeakRule::Drop, "drop"},
+                                       {ExtractionRules::PeakRule::SlidOrDrop, "slid_or_drop"},
+                                       {ExtractionRules::PeakRule::SlidOrRelativeDrop, "slid_or_relative_drop"},
+                                       {ExtractionRules::PeakRule::SlidOrEvent, "slid_or_event"}};
+}  // namespace
+
+std::string peak_rule_name(ExtractionRules::PeakRule r) {
+  for (const auto& p : kPeakRules)
+    if (p.rule == r) return p.name;
+  return "?";
+}
+
+ExtractionRules::PeakRule parse_peak_rule(const std::string& text) {
+  std::string names;
+  for (const auto& p : kPeakRules) {
+    if (text == p.name) return p.rule;
+    names += (names.empty() ? "" : ", ") + std::string(p.name);
+  }
+  throw InputError("peak_rule", "'" + text + "' is not one of: " + names);
+}
+
 double Scene::t0_s() const {
   const auto d = derived();
   auto mask = contact_mask(pattern, geometry.N, 0);

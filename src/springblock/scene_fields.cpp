@@ -198,14 +198,15 @@ std::vector<Entry> run_and_extraction_entries() {
      }},
     {{"sample_dt", "spacing of mu(t) samples (default 1e-2ms; at most duration/2)", "1e-2ms"},
      [](Scene& s, auto& k, auto& v) { s.run.sample_dt_s = parse_quantity(v, Dimension::Time, k); }},
-    {{"peak_rule", "end of the loading phase for mu_s: all_slipped (every contact block has slid once, default) or drop", "all_slipped"},
-     [](Scene& s, auto& k, auto& v) {
-       if (v == "all_slipped") s.rules.peak_rule = ExtractionRules::PeakRule::AllSlipped;
-       else if (v == "drop") s.rules.peak_rule = ExtractionRules::PeakRule::Drop;
-       else throw InputError(k, "'" + v + "' is not one of: all_slipped, drop");
-     }},
-    {{"peak_drop", "with --peak-rule drop: mu falling this far below its running max ends loading (default 0.05)", "0.05"},
+    {{"peak_rule", "end of the loading phase for mu_s: all_slipped (every contact block has slid once, default), drop, "
+                   "or all_slipped's moment unless earlier: slid_or_drop, slid_or_relative_drop, slid_or_event", "all_slipped"},
+     [](Scene& s, auto&, auto& v) { s.rules.peak_rule = parse_peak_rule(v); }},
+    {{"peak_drop", "with --peak-rule drop or slid_or_drop: mu falling this far below its running max ends loading (default 0.05)", "0.05"},
      [](Scene& s, auto& k, auto& v) { s.rules.peak_drop = number(k, v); }},
+    {{"peak_drop_fraction", "with --peak-rule slid_or_relative_drop: mu falling below (1 - this) times its running max ends loading (default 0.1)", "0.1"},
+     [](Scene& s, auto& k, auto& v) { s.rules.peak_drop_fraction = number(k, v); }},
+    {{"peak_event_fraction", "with --peak-rule slid_or_event: a slip event moving at least this share of the contact blocks ends loading (default 0.5)", "0.5"},
+     [](Scene& s, auto& k, auto& v) { s.rules.peak_event_fraction = number(k, v); }},
     {{"mu_d_skip", "mu_d window starts this many t0 after the first slip, before the end of the run (default 0.25)", "0.25"},
      [](Scene& s, auto& k, auto& v) { s.rules.mu_d_skip_t0 = number(k, v); }},
     {{"stop_after_mu_s", "stop each repetition at the first macroscopic slip; mu_d is then not measured (true/false, default false)", "false"},

@@ -53,8 +53,10 @@ void to_json(nlohmann::json& j, const Scene& s) {
                      {"t0_s", s.t0_s()},
                      {"sample_dt_s", s.run.sample_dt_s},
                      {"stop_after_mu_s", s.run.stop_after_mu_s},
-                     {"peak_rule", s.rules.peak_rule == ExtractionRules::PeakRule::AllSlipped ? "all_slipped" : "drop"},
+                     {"peak_rule", peak_rule_name(s.rules.peak_rule)},
                      {"peak_drop", s.rules.peak_drop},
+                     {"peak_drop_fraction", s.rules.peak_drop_fraction},
+                     {"peak_event_fraction", s.rules.peak_event_fraction},
                      {"mu_d_skip_t0", s.rules.mu_d_skip_t0},
                      {"reps", s.reps},
                      {"seed", s.seed}};

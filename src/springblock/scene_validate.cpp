@@ -154,6 +154,10 @@ void validate_measurable(const Scene& s) {
   const auto& r = s.run;
   require(finite(s.rules.peak_drop) && s.rules.peak_drop > 0 && s.rules.peak_drop <= 1, "peak_drop",
           s.rules.peak_drop, "(0, 1]");
+  require(finite(s.rules.peak_drop_fraction) && s.rules.peak_drop_fraction > 0 && s.rules.peak_drop_fraction < 1,
+          "peak_drop_fraction", s.rules.peak_drop_fraction, "(0, 1)");
+  require(finite(s.rules.peak_event_fraction) && s.rules.peak_event_fraction > 0 && s.rules.peak_event_fraction <= 1,
+          "peak_event_fraction", s.rules.peak_event_fraction, "(0, 1]");
   require(finite(s.rules.mu_d_skip_t0) && s.rules.mu_d_skip_t0 >= 0 && s.rules.mu_d_skip_t0 <= 1e3,
           "mu_d_skip", s.rules.mu_d_skip_t0, "[0, 1000]");
   const double T = s.duration(), t0 = s.t0_s();

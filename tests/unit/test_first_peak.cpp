@@ -138,3 +138,100 @@ TEST(FirstPeak, EndOfLoadingDoesNotDependOnSampleSpacing) {
   // 1 / t0 (t0 = 1.5 s here), so by less than 1e-4 over one coarse interval.
   EXPECT_NEAR(runs[1].mu_s, runs[0].mu_s, 1e-4);
 }
+
+// The SlidOr* rules end loading at the all-slipped moment or at their own condition, whichever
+// comes first.
+TEST(FirstPeak, SlidOrDropEndsAtTheDropBeforeEveryBlockSlid) {
+  Scripted sc;
+  sc.make_two_blocks();
+  FrictionObserverConfig cfg;
+  cfg.peak_rule = ExtractionRules::PeakRule::SlidOrDrop;
+  cfg.peak_drop = 0.1;
+  FrictionObserver obs(cfg);
+  double t = 0;
+  for (double mu = 0; mu < 0.6; mu += 0.01) sc.feed(obs, t += 1, mu);
+  const double peak = obs.max_mu();
+  sc.s.mark_slip(0);
+  sc.feed(obs, t += 1, peak - 0.09);  // a dip smaller than the threshold
+  EXPECT_FALSE(obs.slipped());
+  sc.feed(obs, t += 1, peak - 0.11);  // falls 0.1 below the peak: loading over, one block slid
+  EXPECT_TRUE(obs.slipped());
+  EXPECT_DOUBLE_EQ(obs.mu_s(), peak);
+  EXPECT_EQ(obs.t_slip(), t);
+}
+
+TEST(FirstPeak, SlidOrDropEndsWhenEveryBlockSlidWithoutADrop) {
+  Scripted sc;
+  sc.make_two_blocks();
+  FrictionObserverConfig cfg;
+  cfg.peak_rule = ExtractionRules::PeakRule::SlidOrDrop;
+  cfg.peak_drop = 0.2;
+  FrictionObserver obs(cfg);
+  double t = 0;
+  for (double mu = 0; mu < 0.6; mu += 0.01) sc.feed(obs, t += 1, mu);
+  sc.s.mark_slip(0);
+  sc.s.mark_slip(1);
+  sc.feed(obs, t += 1, 0.55);  // only 0.04 below the peak, but the whole surface has moved
+  EXPECT_TRUE(obs.slipped());
+  EXPECT_EQ(obs.t_slip(), t);
+}
+
+TEST(FirstPeak, RelativeDropScalesWithThePeak) {
+  for (const double peak : {0.3, 0.8}) {
+    Scripted sc;
+    sc.make_two_blocks();
+    FrictionObserverConfig cfg;
+    cfg.peak_rule = ExtractionRules::PeakRule::SlidOrRelativeDrop;
+    cfg.peak_drop_fraction = 0.2;
+    FrictionObserver obs(cfg);
+    double t = 0;
+    sc.feed(obs, t += 1, peak);
+    sc.feed(obs, t += 1, 0.81 * peak);  // 19 % below
+    EXPECT_FALSE(obs.slipped()) << peak;
+    sc.feed(obs, t += 1, 0.79 * peak);  // 21 % below
+    EXPECT_TRUE(obs.slipped()) << peak;
+    EXPECT_DOUBLE_EQ(obs.mu_s(), peak);
+  }
+}
+
+// SlidOrEvent counts the distinct contact blocks of one slip event, from the switches.
+TEST(FirstPeak, SlidOrEventEndsAtTheFirstLargeSlipEvent) {
+  Scripted sc;
+  sc.make_two_blocks();
+  sc.c.N = 4;
+  sc.c.contact = {1, 1, 1, 1};
+  sc.c.f_static.assign(4, 10);
+  sc.c.f_kinetic.assign(4, 0.0);  // only block 0's scripted force counts, sliding or not
+  sc.c.mu_s.assign(4, 10);
+  sc.c.mu_d.assign(4, 0.5);
+  sc.c.n_contact = 4;
+  sc.s = State::at_rest(sc.c);
+  FrictionObserverConfig cfg;
+  cfg.peak_rule = ExtractionRules::PeakRule::SlidOrEvent;
+  cfg.peak_event_fraction = 0.5;  // two of the four blocks
+  FrictionObserver obs(cfg);
+  auto slide = [&](int i, int dir) {
+    sc.s.dir[i] = static_cast<std::int8_t>(dir);
+    if (dir != 0) sc.s.mark_slip(i);
+    obs.switched(sc.c, sc.s, SwitchedBlocks::one(i));
+  };
+  double t = 0;
+  for (double mu = 0; mu < 0.6; mu += 0.01) sc.feed(obs, t += 1, mu);
+  slide(0, 1);  // a precursor of one block: starts...
+  sc.feed(obs, t += 1, 0.2);
+  slide(0, 0);  // ...and stops; a large dip, but one block of four
+  sc.feed(obs, t += 1, 0.3);
+  EXPECT_FALSE(obs.slipped());
+  for (double mu = 0.3; mu < 0.7; mu += 0.01) sc.feed(obs, t += 1, mu);
+  const double peak = obs.max_mu();
+  slide(1, 1);  // one event moves blocks 1 and 2 (and block 1 twice: counted once)
+  slide(1, 0);
+  slide(1, 1);
+  sc.feed(obs, t += 1, peak);
+  EXPECT_FALSE(obs.slipped());
+  slide(2, 1);
+  sc.feed(obs, t += 1, peak - 0.01);
+  EXPECT_TRUE(obs.slipped());
+  EXPECT_DOUBLE_EQ(obs.mu_s(), peak);
+  EXPECT_EQ(obs.t_slip(), t);
+}

@@ -128,3 +128,17 @@ TEST(FrictionObserver, KeepingTheSeriesChangesNoStatisticUncoupled) {
 TEST(FrictionObserver, KeepingTheSeriesChangesNoStatisticRk4) {
   expect_observation_changes_nothing(base("smooth", "rk4"));
 }
+
+// The same for each reading of the first peak that ends loading earlier than all_slipped: a drop
+// rule makes the observer test every sample, the event rule keeps the quiet phases' stretches.
+TEST(FrictionObserver, KeepingTheSeriesChangesNoStatisticUnderEveryReading) {
+  const std::pair<const char*, const char*> rules[] = {
+      {"slid_or_drop", "peak_drop"}, {"slid_or_relative_drop", "peak_drop_fraction"}, {"slid_or_event", "peak_event_fraction"}};
+  for (const auto& [rule, field] : rules) {
+    SCOPED_TRACE(rule);
+    Scene s = base("periodic:2,2", "event");
+    set_scene_field(s, "peak_rule", rule);
+    set_scene_field(s, field, "0.1");
+    expect_observation_changes_nothing(s);
+  }
+}

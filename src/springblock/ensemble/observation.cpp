@@ -12,6 +12,8 @@ FrictionObserverConfig observer_config(const Scene& scene, const Chain& chain, i
   cfg.F_load = chain.F_load;
   cfg.peak_rule = scene.rules.peak_rule;
   cfg.peak_drop = scene.rules.peak_drop;
+  cfg.peak_drop_fraction = scene.rules.peak_drop_fraction;
+  cfg.peak_event_fraction = scene.rules.peak_event_fraction;
   cfg.mu_d_skip_s = scene.rules.mu_d_skip_t0 * scene.t0_s();
   cfg.block_area_P = d.l_x_m * scene.material.l_y_m * scene.material.P_Pa;
   cfg.keep_series = scene.observe.series && rep == 0;

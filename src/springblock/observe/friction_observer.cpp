@@ -120,11 +120,8 @@ void FrictionObserver::record(const Chain& c, const State& s, double mu, double 
       t_max_ = s.t;
     }
     running_max_signed_ = std::max(running_max_signed_, mu_signed);
-    // End of the loading phase: mu_s is the peak reached before it.
-    const bool ended = cfg_.peak_rule == ExtractionRules::PeakRule::AllSlipped
-                           ? !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact
-                           : mu < running_max_ - cfg_.peak_drop;
-    if (ended) {
+    // End of the loading phase: mu_s is the peak reached up to it.
+    if (ends_at_next_sample(c, s) || (tests_drop() && falls(mu, running_max_))) {
       slipped_ = true;
       t_slip_ = s.t;
     }
@@ -139,8 +136,32 @@ void FrictionObserver::record(const Chain& c, const State& s, double mu, double 
   if (cfg_.progress_ns) cfg_.progress_ns->store(static_cast<std::int64_t>(s.t * 1e9), std::memory_order_relaxed);
 }
 
-void FrictionObserver::switched(const Chain&, const State&, SwitchedBlocks blocks) {
+void FrictionObserver::switched(const Chain& c, const State& s, SwitchedBlocks blocks) {
   switched_totals_.switched(blocks.begin(), blocks.end());
+  if (cfg_.peak_rule != ExtractionRules::PeakRule::SlidOrEvent || slipped_ || large_event_) return;
+  // The open event's distinct blocks only grow; one that ended at this instant is the last one
+  // recorded. Rounded up, with a margin for the product's round-off (0.1 x 30 is 3, not 4).
+  loading_events_.switched(c, s, blocks);
+  const auto& done = loading_events_.events();
+  const int blocks_now = std::max(loading_events_.under_way().blocks, done.empty() ? 0 : done.back().blocks);
+  const double need = std::ceil(cfg_.peak_event_fraction * c.n_contact * (1.0 - 1e-12));
+  large_event_ = blocks_now >= need;
+}
+
+bool FrictionObserver::tests_drop() const {
+  using R = ExtractionRules::PeakRule;
+  return cfg_.peak_rule == R::Drop || cfg_.peak_rule == R::SlidOrDrop || cfg_.peak_rule == R::SlidOrRelativeDrop;
+}
+
+bool FrictionObserver::falls(double mu, double running_max) const {
+  return cfg_.peak_rule == ExtractionRules::PeakRule::SlidOrRelativeDrop
+             ? mu < (1.0 - cfg_.peak_drop_fraction) * running_max
+             : mu < running_max - cfg_.peak_drop;
+}
+
+bool FrictionObserver::ends_at_next_sample(const Chain& c, const State& s) const {
+  if (tests_all_slid() && !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact) return true;
+  return large_event_;
 }
 
 long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, double dt, long n,
@@ -168,18 +189,17 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   auto mu_signed = [&](long k) { return (As + Bs * t_of(k)) * inv; };
   long taken = m;
   if (!slipped_) {
-    const bool all_slipped_rule = cfg_.peak_rule == ExtractionRules::PeakRule::AllSlipped;
-    // Nothing slips inside the stretch, so the all-slipped rule cannot end loading here (if it
-    // already holds, the first sample must end it: served by sample()).
-    if (all_slipped_rule && !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact) return 0;
-    if (!all_slipped_rule) {
-      // Drop rule: loading ends at the first sample below (running max - drop); the max of an
-      // affine sequence is at one end, so the running max is monotone: stop before any sample
-      // where mu falls below the max so far minus the drop (that one goes to sample()).
+    // Nothing slips inside the stretch, so neither every block having slid nor a slip event can
+    // end loading here (if one already does, the first sample must end it: served by sample()).
+    if (ends_at_next_sample(c, s)) return 0;
+    if (tests_drop()) {
+      // A drop rule: loading ends at the first sample that falls from the running max; the max
+      // of an affine sequence is at one end, so the running max is monotone: stop before any
+      // sample that falls (that one goes to sample()).
       double rmax = running_max_;
       for (taken = 0; taken < m; ++taken) {
         const double x = mu(k0 + taken);
-        if (x < rmax - cfg_.peak_drop) break;
+        if (falls(x, rmax)) break;
         rmax = std::max(rmax, x);
       }
       if (taken == 0) return 0;
@@ -254,14 +274,13 @@ long FrictionObserver::sample_sums(const Chain& c, const State& s_stretch, long 
 // whose upper bound is below the largest lower bound in the stretch (or below the running
 // maximum) can change neither; the others are looked at in order and recorded as record() would,
 // which gives the mu_s, t_peak and signed peak of one-by-one service bit for bit. Not with a
-// series or a snapshot (they read every sample), under the drop rule (its end of loading is a
-// test on every sample), nor once the all-slipped rule holds (the first sample ends loading).
+// series or a snapshot (they read every sample), under a drop rule (its end of loading is a
+// test on every sample), nor once the rule's end holds (the first sample ends loading).
 long FrictionObserver::loading_stretch(const Chain& c, const State& s, long k0, double dt, long n,
                                        SampleStretch& stretch) {
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
-  if (cfg_.peak_rule != ExtractionRules::PeakRule::AllSlipped || cfg_.keep_series || stress_due(t_of(k0 + n - 1)))
-    return 0;
-  if (!s.slipped_once.empty() && s.n_slipped_once >= c.n_contact) return 0;
+  if (tests_drop() || cfg_.keep_series || stress_due(t_of(k0 + n - 1))) return 0;
+  if (ends_at_next_sample(c, s)) return 0;
   RingingSums& sums = ringing(stretch.forces());
   RingingSums::Envelope e{};
   if (!sums.envelope(k0, dt, n, e)) return 0;

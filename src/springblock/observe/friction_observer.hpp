@@ -16,6 +16,7 @@
 
 #include "springblock/observe/observer.hpp"
 #include "springblock/observe/ringing_sums.hpp"
+#include "springblock/observe/slip_events.hpp"
 #include "springblock/run_control.hpp"
 
 namespace sb {
@@ -34,7 +35,9 @@ struct StressSnapshot {
 struct FrictionObserverConfig {
   double F_load = 1;
   ExtractionRules::PeakRule peak_rule = ExtractionRules::PeakRule::AllSlipped;
-  double peak_drop = 0.05;        // Drop rule: mu below running max by this much ends loading
+  double peak_drop = 0.05;             // Drop, SlidOrDrop: mu below running max by this much ends loading
+  double peak_drop_fraction = 0.1;     // SlidOrRelativeDrop: mu below (1 - this) running max ends it
+  double peak_event_fraction = 0.5;    // SlidOrEvent: a slip event moving this share of the contact blocks
   double mu_d_skip_s = 0;         // start of the mu_d window after the first slip
   double block_area_P = 1;        // l_x l_y P, for sigma/P
   bool keep_series = false;
@@ -95,6 +98,15 @@ class FrictionObserver final : public Observer {
   long loading_stretch(const Chain& c, const State& s, long k0, double dt, long n, SampleStretch& stretch);
   // One sample's mu(t), mu_signed(t) and sliding count into the peak, the window and the series.
   void record(const Chain& c, const State& s, double mu, double mu_signed, int n_sliding);
+  // Which of the loading phase's end conditions the rule tests (ExtractionRules::PeakRule).
+  bool tests_all_slid() const { return cfg_.peak_rule != ExtractionRules::PeakRule::Drop; }
+  bool tests_drop() const;
+  // A sample of mu below this threshold ends loading under a drop rule (the running max given).
+  bool falls(double mu, double running_max) const;
+  // Whether the next sample ends loading whatever its mu: every contact block has slid (for the
+  // rules that test it) or a large enough slip event has happened (SlidOrEvent). Neither changes
+  // between switches.
+  bool ends_at_next_sample(const Chain& c, const State& s) const;
   // The sums of the forces f describe, kept for the next phase of the same run.
   RingingSums& ringing(RingingForces& f);
   // A stress snapshot is due at a sample at time t (the first sample at or after its time).
@@ -117,6 +129,9 @@ class FrictionObserver final : public Observer {
   std::vector<double> f_contact_;  // per block: its friction force at the current sample (sample())
   SwitchedTotals switched_totals_;  // a per-block run's stretch totals (AffineForces::per_block)
   std::unique_ptr<RingingSums> ringing_;  // the sums of the integrator's exact forces (sample_ringing)
+  // SlidOrEvent: the slip events of the loading phase, and whether one has moved enough blocks.
+  SlipEventObserver loading_events_;
+  bool large_event_ = false;
 };
 
 }  // namespace sb
