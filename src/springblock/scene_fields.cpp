@@ -196,12 +196,12 @@ std::vector<Entry> run_and_extraction_entries() {
          if (!(s.run.duration_s > 0)) throw InputError(k, "duration = " + v + " must be > 0");
        }
      }},
-    {{"sample_dt", "spacing of mu(t) samples (default 1e-2ms; at most duration/2)", "1e-2ms"},
+    {{"sample_dt", "spacing of mu(t) samples (default 1e-3ms; at most duration/2)", "1e-3ms"},
      [](Scene& s, auto& k, auto& v) { s.run.sample_dt_s = parse_quantity(v, Dimension::Time, k); }},
-    {{"peak_rule", "end of the loading phase for mu_s: all_slipped (every contact block has slid once, default), drop, "
-                   "or all_slipped's moment unless earlier: slid_or_drop, slid_or_relative_drop, slid_or_event", "all_slipped"},
+    {{"peak_rule", "end of the loading phase for mu_s: all_slipped (every contact block has slid once), drop, or "
+                   "all_slipped's moment unless earlier: slid_or_drop (default), slid_or_relative_drop, slid_or_event", "slid_or_drop"},
      [](Scene& s, auto&, auto& v) { s.rules.peak_rule = parse_peak_rule(v); }},
-    {{"peak_drop", "with --peak-rule drop or slid_or_drop: mu falling this far below its running max ends loading (default 0.05)", "0.05"},
+    {{"peak_drop", "with --peak-rule drop or slid_or_drop: mu falling this far below its running max ends loading (default 0.1)", "0.1"},
      [](Scene& s, auto& k, auto& v) { s.rules.peak_drop = number(k, v); }},
     {{"peak_drop_fraction", "with --peak-rule slid_or_relative_drop: mu falling below (1 - this) times its running max ends loading (default 0.1)", "0.1"},
      [](Scene& s, auto& k, auto& v) { s.rules.peak_drop_fraction = number(k, v); }},

@@ -83,10 +83,10 @@ expect_error "--mu-s 1.0,0.1 --mu-d 1.5,0.01 --pair-policy keep" mu_d "value 1.5
 expect_error "--sample-dt 1s" sample_dt "value 1" "(0, duration / 2 = 0.8 s]"
 expect_error "--sample-dt 2s --stop-after-mu-s true" sample_dt "value 2" "(0, duration = 1.6 s]"
 # A mu_d window that opens after the end of the run, or exactly at it (zero length).
-expect_error "--mu-d-skip 10" mu_d_skip "value 10" "[0, (duration - sample_dt) / t0 = 3.99998)"
-expect_error "--mu-d-skip 4" mu_d_skip "value 4" "[0, (duration - sample_dt) / t0 = 3.99998)"
+expect_error "--mu-d-skip 10" mu_d_skip "value 10" "[0, (duration - sample_dt) / t0 = 4)"
+expect_error "--mu-d-skip 4" mu_d_skip "value 4" "[0, (duration - sample_dt) / t0 = 4)"
 expect_error "--duration 0.1t0" mu_d_skip "value 0.25" "lengthen --duration"
-expect_error "--duration 0.1s --mu-d-skip 0.3" mu_d_skip "value 0.3" "[0, (duration - sample_dt) / t0 = 0.249975)"
+expect_error "--duration 0.1s --mu-d-skip 0.3" mu_d_skip "value 0.3" "[0, (duration - sample_dt) / t0 = 0.249998)"
 
 # The pattern subcommand refuses an empty surface too.
 "$sb" pattern --N 10 --pattern random:0.99 >/dev/null 2>&1

@@ -212,7 +212,7 @@ Peak first_peak(const sb::Scene& sc, sb::Integrator& integ) {
   sb::State s = sb::State::at_rest(c);
   sb::FrictionObserverConfig cfg;
   cfg.F_load = c.F_load;
-  cfg.peak_drop = sc.rules.peak_drop;
+  cfg.peak_rule = sb::ExtractionRules::PeakRule::AllSlipped;  // up to the whole surface's slip: many switches
   cfg.stop_after_mu_s = true;
   sb::FrictionObserver obs(cfg);
   integ.run(c, s, sc.duration(), sc.run.sample_dt_s, obs);
@@ -320,7 +320,7 @@ struct PairedRuns {
     sc.run.duration_t0 = 3.0;
     c = sb::build_chain(sc, 0);
     cfg.F_load = c.F_load;
-    cfg.peak_drop = sc.rules.peak_drop;
+    cfg.peak_rule = sb::ExtractionRules::PeakRule::AllSlipped;  // up to the whole surface's slip: many switches
     cfg.mu_d_skip_s = 0.25 * sc.t0_s();
   }
   void run(sb::Observer& a, sb::Observer& b) {

@@ -40,7 +40,7 @@ Outcome run(const sb::Scene& sc, sb::EventDriven& e) {
   sb::State s = sb::State::at_rest(c);
   sb::FrictionObserverConfig cfg;
   cfg.F_load = c.F_load;
-  cfg.peak_drop = sc.rules.peak_drop;
+  cfg.peak_rule = sb::ExtractionRules::PeakRule::AllSlipped;  // up to the whole surface's slip: many switches
   cfg.stop_after_mu_s = sc.run.stop_after_mu_s;
   sb::FrictionObserver obs(cfg);
   Outcome r;

@@ -1,5 +1,5 @@
 // The first-peak rules on synthetic mu(t) histories. Drop rule: dips smaller than peak_drop do
-// not end the loading phase; the first larger drop does. All-slipped rule (the default): only the
+// not end the loading phase; the first larger drop does. All-slipped rule: only the
 // moment every contact block has slid once ends it, however large a precursor's dip. Either way
 // mu_s is the peak reached before the end of loading.
 #include <gtest/gtest.h>
@@ -86,7 +86,9 @@ TEST(FirstPeak, MuDAveragesOnlyTheWindowAfterTheSlip) {
 TEST(FirstPeak, AllSlippedRuleIgnoresLargePrecursorDips) {
   Scripted sc;
   sc.make_two_blocks();
-  FrictionObserver obs(FrictionObserverConfig{});  // default rule: all contact blocks slipped
+  FrictionObserverConfig cfg;
+  cfg.peak_rule = ExtractionRules::PeakRule::AllSlipped;  // only all contact blocks slipped ends it
+  FrictionObserver obs(cfg);
   double t = 0;
   for (double mu = 0; mu < 0.5; mu += 0.01) sc.feed(obs, t += 1, mu);
   sc.s.mark_slip(0);            // a precursor: one of two blocks slides...

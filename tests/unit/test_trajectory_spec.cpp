@@ -55,7 +55,9 @@ const Verdict kVerdicts[] = {
     // What is read off the trajectory or recorded, and who runs it.
     {"duration", "2t0", false},
     {"peak_rule", "drop", false},
-    {"peak_drop", "0.1", false},
+    {"peak_drop", "0.2", false},
+    {"peak_drop_fraction", "0.2", false},
+    {"peak_event_fraction", "0.25", false},
     {"mu_d_skip", "0.5", false},
     {"stress_times", "0.2s", false},
     {"slip_events", "true", false},

@@ -274,17 +274,28 @@ long FrictionObserver::sample_sums(const Chain& c, const State& s_stretch, long 
 // whose upper bound is below the largest lower bound in the stretch (or below the running
 // maximum) can change neither; the others are looked at in order and recorded as record() would,
 // which gives the mu_s, t_peak and signed peak of one-by-one service bit for bit. Not with a
-// series or a snapshot (they read every sample), under a drop rule (its end of loading is a
-// test on every sample), nor once the rule's end holds (the first sample ends loading).
+// series or a snapshot (they read every sample), under a drop rule where a sample might fall,
+// nor once the rule's end holds (the first sample ends loading).
 long FrictionObserver::loading_stretch(const Chain& c, const State& s, long k0, double dt, long n,
                                        SampleStretch& stretch) {
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
-  if (tests_drop() || cfg_.keep_series || stress_due(t_of(k0 + n - 1))) return 0;
+  if (cfg_.keep_series || stress_due(t_of(k0 + n - 1))) return 0;
   if (ends_at_next_sample(c, s)) return 0;
   RingingSums& sums = ringing(stretch.forces());
   RingingSums::Envelope e{};
   if (!sums.envelope(k0, dt, n, e)) return 0;
   const double F = cfg_.F_load;
+  // A drop rule ends loading at the first sample that falls from the running maximum, which is
+  // at most the larger of today's and the stretch's upper bound: if no sample's lower bound is
+  // below what that maximum would let fall (with a margin for the division by F), none ends
+  // loading here, and the stretch is taken as under the all-slipped rule. Otherwise it is left to
+  // sample(), one by one.
+  if (tests_drop()) {
+    const double highest = std::max(running_max_, (std::max(e.abs_first, e.abs_last) + e.reach) / F);
+    const double lowest = (std::min(e.abs_first, e.abs_last) - e.reach) / F;
+    const double margin = 1e-9 * std::max(1.0, std::fabs(highest));
+    if (falls(lowest - margin, highest)) return 0;
+  }
   auto line = [n](double first, double last, long j) {
     return n == 1 ? first : first + (last - first) * (static_cast<double>(j) / static_cast<double>(n - 1));
   };

@@ -34,10 +34,11 @@ struct StressSnapshot {
 
 struct FrictionObserverConfig {
   double F_load = 1;
-  ExtractionRules::PeakRule peak_rule = ExtractionRules::PeakRule::AllSlipped;
-  double peak_drop = 0.05;             // Drop, SlidOrDrop: mu below running max by this much ends loading
-  double peak_drop_fraction = 0.1;     // SlidOrRelativeDrop: mu below (1 - this) running max ends it
-  double peak_event_fraction = 0.5;    // SlidOrEvent: a slip event moving this share of the contact blocks
+  // The scene's defaults (ExtractionRules); the thresholds are read only by their rules.
+  ExtractionRules::PeakRule peak_rule = ExtractionRules{}.peak_rule;
+  double peak_drop = ExtractionRules{}.peak_drop;                    // Drop, SlidOrDrop
+  double peak_drop_fraction = ExtractionRules{}.peak_drop_fraction;  // SlidOrRelativeDrop
+  double peak_event_fraction = ExtractionRules{}.peak_event_fraction;  // SlidOrEvent
   double mu_d_skip_s = 0;         // start of the mu_d window after the first slip
   double block_area_P = 1;        // l_x l_y P, for sigma/P
   bool keep_series = false;
