@@ -16,6 +16,9 @@ py::object to_python(const nlohmann::json& j) {
 PYBIND11_MODULE(_core, m) {
   m.doc() = "The compiled part of the package springblock (import springblock, not this module).";
   m.attr("__version__") = SPRINGBLOCK_PYTHON_VERSION;
+  // Defined under the package's name, so classes, signatures and the submodule read
+  // springblock.Scene and springblock.theory: where users, pickle and the documentation find them.
+  m.attr("__name__") = "springblock";
   sb::python::bind_errors(m);
   sb::python::bind_scene(m);
   sb::python::bind_result(m);
@@ -23,4 +26,5 @@ PYBIND11_MODULE(_core, m) {
   sb::python::bind_theory(m);
   sb::python::bind_sweep(m);
   sb::python::bind_design(m);
+  m.attr("__name__") = "springblock._core";
 }

@@ -2,7 +2,9 @@
 the same checkpoint (a sweep stopped in Python resumes in Python or on the command line), a
 progress callback on the calling thread, and results as records and DataFrames."""
 import json
+import os
 import shutil
+import signal
 import threading
 
 import pytest
@@ -103,6 +105,32 @@ def test_stopped_by_the_callback_then_resumed(tmp_path, cli):
     assert resumed.header["resumed_units"] == checkpointed
     assert [stable(x) for x in resumed.scenes] == [stable(x) for x in clean[1:]]
     assert [stable(x) for x in lines(tmp_path / "c.jsonl")[1:]] == [stable(x) for x in clean[1:]]
+
+
+def test_ctrl_c_leaves_the_checkpoint(tmp_path):
+    sweep_file, out = tmp_path / "long.toml", tmp_path / "i.jsonl"
+    sweep_file.write_text(LONG)
+
+    def press_ctrl_c(p):
+        if p["done"] >= 1:
+            os.kill(os.getpid(), signal.SIGINT)
+
+    with pytest.raises(KeyboardInterrupt):
+        sb.sweep(sweep_file, out, threads=1, progress=press_ctrl_c)
+    assert not out.exists() and (tmp_path / "i.jsonl.checkpoint").exists()
+    assert (tmp_path / "i.jsonl.partial").exists()  # the scenes complete so far, marked partial
+    resumed = sb.sweep(sweep_file, out, resume=True)
+    assert 0 < resumed.report["resumed"] < UNITS and resumed.report["computed"] == UNITS - resumed.report["resumed"]
+
+
+def test_units_file_is_the_command_lines(sweep_file, tmp_path, cli):
+    done = cli("sweep", sweep_file, "--out", tmp_path / "c.jsonl", "--units", tmp_path / "c.units", check=False)
+    assert done.returncode == 0, done.stderr
+    sb.sweep(sweep_file, tmp_path / "p.jsonl", units=tmp_path / "p.units")
+    mine, theirs = lines(tmp_path / "p.units"), lines(tmp_path / "c.units")
+    assert len(mine) == UNITS
+    assert sorted((stable(x) for x in mine), key=lambda x: x["unit"]) == \
+        sorted((stable(x) for x in theirs), key=lambda x: x["unit"])
 
 
 def test_progress_reaches_the_end(sweep_file, tmp_path):

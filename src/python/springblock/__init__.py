@@ -14,7 +14,6 @@ from springblock._studies import DesignResult, SweepResult, design, sweep
 from springblock._tables import result_records, result_to_pandas
 
 
-
 def run(scene, series=False):
     """Run the scene's repetitions (in parallel over its ``threads``) and return a Result.
 
@@ -34,12 +33,6 @@ def run_many(scenes, series=False):
 
 Result.records = result_records
 Result.to_pandas = result_to_pandas
-
-# The compiled classes and functions say they are springblock's, where users (and pickle, and the
-# documentation) find them, rather than springblock._core's.
-for _name in ("InputError", "Result", "Scene", "Series", "Statistic", "observables", "scene_fields"):
-    getattr(_core, _name).__module__ = __name__
-del _name
 
 __all__ = ["DesignResult", "InputError", "Result", "Scene", "Series", "Statistic", "SweepResult", "__version__",
            "design", "observables", "run", "run_many", "scene_fields", "sweep", "theory"]
