@@ -111,7 +111,7 @@ void bind_scene(py::module_& m) {
            "Pickled as its complete state (every field, the mask's blocks, the materials' columns),\n"
            "so an unpickled scene, in this process or another, runs bit-identically.")
       .def("__eq__", [](const sb::Scene& a, const sb::Scene& b) { return scene_state_text(a) == scene_state_text(b); },
-           "Equal when every field is: the same state, hence the same numbers when run.")
+           py::is_operator(), "Equal when every field is: the same state, hence the same numbers when run.")
       .def("__hash__", [](const sb::Scene& s) { return py::hash(py::str(scene_state_text(s))); });
   m.def("scene_fields", &field_table,
         "Every scene field: key (the keyword), help (meaning, default, units) and an example value.");

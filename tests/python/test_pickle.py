@@ -143,3 +143,7 @@ def test_a_process_pool_gives_the_command_lines_numbers(cli, context):
             assert getattr(result, name).mean == expected[name]["mean"]
             assert getattr(result, name).sem == expected[name]["sem"]
         assert same(numbers(other), numbers(result)) and same(numbers(mine), numbers(result))
+
+
+def test_a_scene_is_not_equal_to_other_things():
+    assert sb.Scene() != 3 and not (sb.Scene() == "smooth")

@@ -33,6 +33,10 @@ def run_many(scenes, series=False):
 
 Result.records = result_records
 Result.to_pandas = result_to_pandas
+# Documented (and pickled) as the package's own, where users find them.
+for _public in (DesignResult, SweepResult, design, sweep):
+    _public.__module__ = __name__
+del _public
 
 __all__ = ["DesignResult", "InputError", "Result", "Scene", "Series", "Statistic", "SweepResult", "__version__",
            "design", "observables", "run", "run_many", "scene_fields", "sweep", "theory"]
