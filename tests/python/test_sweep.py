@@ -171,3 +171,10 @@ def test_bad_input_names_the_field_and_writes_nothing(tmp_path, spec, out, field
         sb.sweep(spec, tmp_path / out if out else None)
     assert e.value.field == field
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_results_file_of_the_command_line_reads_back(tmp_path, cli_results):
+    path = tmp_path / "cli.jsonl"
+    result = sb.SweepResult(path)
+    assert result.report is None and result.header == cli_results[0] and len(result) == 3
+    assert [r["mu_d_mean"] for r in result.records()] == [s["mu_d"]["mean"] for s in cli_results[1:]]

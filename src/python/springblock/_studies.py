@@ -15,19 +15,20 @@ def _command_line(call, arguments):
 
 
 class SweepResult:
-    """What sweep() returns: the results file, read back.
+    """What sweep() returns: the results file, read back. ``SweepResult(path)`` reads any sweep's
+    results file, the command line's too.
 
     Attributes: ``path`` (the results file, JSON lines), ``header`` (its first line: the sweep,
     units computed now and resumed, ranks, threads, provenance), ``scenes`` (one dict per scene:
     ``varied``, every observable's ``{mean, std, sem, n}``, reps, seed, method, ..., ``scene_json``
-    and ``runs``, the per-repetition records), ``report`` (counts and wall time of this call) and
-    ``summary`` (the table `springblock sweep` prints).
+    and ``runs``, the per-repetition records); from sweep(), also ``report`` (counts and wall time
+    of the call) and ``summary`` (the table ``springblock sweep`` prints), else None.
     """
 
-    def __init__(self, path, report):
-        self.path = path
+    def __init__(self, path, report=None):
+        self.path = os.fspath(path)
         self.report = report
-        self.summary = report["summary"]
+        self.summary = report["summary"] if report else None
         with open(path) as f:
             lines = [json.loads(line) for line in f if line.strip()]
         self.header, self.scenes = lines[0], lines[1:]
@@ -36,8 +37,9 @@ class SweepResult:
         return len(self.scenes)
 
     def __repr__(self):
-        return (f"springblock.SweepResult({len(self.scenes)} scenes, {self.report['units']} units "
-                f"({self.report['computed']} computed now, {self.report['resumed']} resumed), path={self.path!r})")
+        h = self.header
+        return (f"springblock.SweepResult({len(self.scenes)} scenes, {h['units']} units "
+                f"({h['computed_units']} computed, {h['resumed_units']} resumed), path={self.path!r})")
 
     @staticmethod
     def _with_varied(varied, row):
