@@ -13,6 +13,7 @@
 #include "shell/output.hpp"
 #include "shell/progress.hpp"
 #include "springblock/design/query.hpp"
+#include "springblock/design/query_text.hpp"
 #include "springblock/design/report.hpp"
 #include "springblock/errors.hpp"
 #include "springblock/scene_fields.hpp"
@@ -23,21 +24,17 @@ namespace sb::app {
 struct DesignArgs {
   shell::FieldOptions fields;
   design::Query query;
-  std::vector<std::string> candidates;
+  design::QueryText text;
   std::string pattern;  // refused: the search chooses the surface
-  std::string family = "periodic", target_mu_s, target_mu_d, target_ratio, minimise, maximise, out_path;
+  std::string out_path;
   bool json = false, progress = false, no_class_prune = false;
 };
 
 namespace {
 
-// The scene fields `design` shares with `run`; the pattern, the repetitions and the stop at the
-// first slip are what the search chooses, so they are not options here.
-bool shared_field(const std::string& key) { return key != "pattern" && key != "reps" && key != "stop_after_mu_s"; }
-
 void add_space_options(CLI::App* cmd, design::DesignSpace& s, DesignArgs& a) {
-  cmd->add_option("--family", a.family, "pattern family: periodic (default), hierarchical, random, or given (--candidates)");
-  cmd->add_option("--candidates", a.candidates,
+  cmd->add_option("--family", a.text.family, "pattern family: periodic (default), hierarchical, random, or given (--candidates)");
+  cmd->add_option("--candidates", a.text.candidates,
                   "given: the surfaces to choose among, each as --pattern takes it (e.g. mask:@a.txt mask:0110 periodic:3,1)");
   cmd->add_option("--pattern", a.pattern, "not an option of design: it chooses the surface (see --family given)");
   cmd->add_option("--min-np", s.min_np, "periodic: smallest pawl size n_p in blocks (default 1)");
@@ -56,11 +53,11 @@ void add_space_options(CLI::App* cmd, design::DesignSpace& s, DesignArgs& a) {
 
 void add_target_options(CLI::App* cmd, DesignArgs& a) {
   const std::string forms = " X, LO:HI, >=X or <=X";
-  cmd->add_option("--target-mu-s", a.target_mu_s, "target macroscopic mu_s:" + forms);
-  cmd->add_option("--target-mu-d", a.target_mu_d, "target macroscopic mu_d:" + forms);
-  cmd->add_option("--target-ratio", a.target_ratio, "target ratio mu_s/mu_d:" + forms);
-  cmd->add_option("--minimise", a.minimise, "minimise mu_s, mu_d or ratio subject to the targets");
-  cmd->add_option("--maximise", a.maximise, "maximise mu_s, mu_d or ratio subject to the targets");
+  cmd->add_option("--target-mu-s", a.text.target_mu_s, "target macroscopic mu_s:" + forms);
+  cmd->add_option("--target-mu-d", a.text.target_mu_d, "target macroscopic mu_d:" + forms);
+  cmd->add_option("--target-ratio", a.text.target_ratio, "target ratio mu_s/mu_d:" + forms);
+  cmd->add_option("--minimise", a.text.minimise, "minimise mu_s, mu_d or ratio subject to the targets");
+  cmd->add_option("--maximise", a.text.maximise, "maximise mu_s, mu_d or ratio subject to the targets");
 }
 
 void add_search_options(CLI::App* cmd, design::Query& q) {
@@ -80,38 +77,13 @@ void add_search_options(CLI::App* cmd, design::Query& q) {
 
 }
 
-design::Quantity parse_quantity_name(const std::string& field, const std::string& text) {
-  if (text == "mu_s") return design::Quantity::MuS;
-  if (text == "mu_d") return design::Quantity::MuD;
-  if (text == "ratio") return design::Quantity::Ratio;
-  throw InputError(field, "'" + text + "' is not a quantity; expected mu_s, mu_d or ratio");
-}
-
 // The query of the command line, validated; the --out file claimed. Bad input throws first.
 design::Query build_query(const DesignArgs& a, CLI::App* cmd) {
   design::Query q = a.query;
-  if (cmd->count("--pattern") > 0)
-    throw InputError("pattern", "'" + a.pattern + "': design chooses the surface, so it takes no fixed pattern; to choose "
-                                "among surfaces of your own give --family given --candidates PATTERN... (masks too), "
-                                "to run one surface use springblock run --pattern");
+  if (cmd->count("--pattern") > 0) design::refuse_pattern(a.pattern);
   q.class_prune = !a.no_class_prune;
-  q.space.given = design::parse_candidates(a.candidates);
   a.fields.apply(q.base);
-  q.base.pattern.kind = SurfaceKind::Smooth;  // validated as smooth; every candidate sets its own
-  validate(q.base);
-  // Per-block friction and springs may ride along; a contact field would replace every candidate.
-  require(!resolve_materials(q.base).has(BlockField::Contact), "materials",
-          "design searches the surface, and a contact column or segment would override every candidate's pattern; "
-          "leave contact out of the materials");
-  q.space.family = design::parse_family(a.family);
-  if (!a.target_mu_s.empty()) q.target.mu_s = design::parse_interval("target_mu_s", a.target_mu_s);
-  if (!a.target_mu_d.empty()) q.target.mu_d = design::parse_interval("target_mu_d", a.target_mu_d);
-  if (!a.target_ratio.empty()) q.target.ratio = design::parse_interval("target_ratio", a.target_ratio);
-  if (!a.minimise.empty() && !a.maximise.empty())
-    throw InputError("maximise", "give --minimise or --maximise, not both");
-  if (!a.minimise.empty()) q.target.goal = design::Goal::Minimise, q.target.objective = parse_quantity_name("minimise", a.minimise);
-  if (!a.maximise.empty()) q.target.goal = design::Goal::Maximise, q.target.objective = parse_quantity_name("maximise", a.maximise);
-  design::validate(q);
+  design::complete_query(q, a.text);
   if (cmd->count("--out") > 0) shell::claim_output(a.out_path, "out");
   return q;
 }
@@ -168,7 +140,7 @@ DesignCommand::DesignCommand(CLI::App& app) : args_(std::make_unique<DesignArgs>
   cmd_ = app.add_subcommand("design", "inverse design: search a pattern family for the surface that gives a target "
                                       "mu_s, mu_d or ratio (successive halving, verified on fresh repetitions)");
   for (const auto& f : scene_fields())
-    if (shared_field(f.key)) args_->fields.add(cmd_, f.key, f.help + " (e.g. " + f.example + ")");
+    if (design::shared_scene_field(f.key)) args_->fields.add(cmd_, f.key, f.help + " (e.g. " + f.example + ")");
   add_space_options(cmd_, args_->query.space, *args_);
   add_target_options(cmd_, *args_);
   add_search_options(cmd_, args_->query);

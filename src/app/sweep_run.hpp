@@ -1,6 +1,6 @@
 #pragma once
-// The sweep command's run: read and expand the sweep file on every rank, open the checkpoint and
-// deal the missing units on the coordinator, then write the results and print the table.
+// The sweep command's run: the library's sweep (sweep/driver.hpp) on MPI ranks or this process's
+// threads, with its progress line, its messages on stderr and its summary table on stdout.
 #include <string>
 
 namespace sb::app {
@@ -13,7 +13,7 @@ struct SweepOptions {
 };
 
 // Returns the exit code (shell::ExitCode). Throws InputError on the coordinator for bad input;
-// other ranks return kBadInput quietly (the coordinator says why, once).
+// other ranks return kOk quietly (the coordinator says why, once).
 int run_sweep(const SweepOptions& options, const std::string& command_line);
 
 }  // namespace sb::app

@@ -22,6 +22,12 @@ void bind_scene(py::module_& m);   // scene.cpp: springblock.Scene, springblock.
 void bind_result(py::module_& m);  // result.cpp: springblock.Result, Statistic, Series, Stress
 void bind_run(py::module_& m);     // run.cpp: springblock.run, springblock.run_many
 void bind_theory(py::module_& m);  // theory.cpp: the submodule springblock.theory
+void bind_sweep(py::module_& m);   // sweep.cpp: springblock._core.sweep (springblock.sweep wraps it)
+void bind_design(py::module_& m);  // design.cpp: springblock._core.design (springblock.design wraps it)
+
+// `base` with `fields` (field name -> value, as Scene() takes them) overlaid and validated
+// (scene.cpp). Throws sb::InputError naming the field.
+sb::Scene with_fields(sb::Scene base, const py::dict& fields);
 
 // A scene's pattern field as a scene file would hold it (pattern_value.cpp): a string as it is,
 // the blocks of a one-dimensional array, list or tuple of 0/1 or booleans as "mask:0110...".

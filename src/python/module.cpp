@@ -1,4 +1,6 @@
-// The Python module `springblock`: the library's scenes, ensembles, results and theory.
+// springblock._core, the compiled part of the package springblock: the library's scenes,
+// ensembles, results, theory, sweeps and design queries. The package (src/python/springblock/)
+// re-exports it and adds what is plain Python: the results of studies as tables.
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
@@ -11,15 +13,18 @@ py::object to_python(const nlohmann::json& j) {
 
 }  // namespace sb::python
 
-PYBIND11_MODULE(springblock, m) {
-  m.doc() =
-      "1-D spring-block friction model (Costagliola, Bosia & Pugno, PRE 2016).\n\n"
-      "Scene(**fields) configures a simulation with the command line's field names, defaults and\n"
-      "units; run(scene) runs its repetitions and returns a Result; theory holds the closed forms.";
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "The compiled part of the package springblock (import springblock, not this module).";
   m.attr("__version__") = SPRINGBLOCK_PYTHON_VERSION;
+  // Defined under the package's name, so classes, signatures and the submodule read
+  // springblock.Scene and springblock.theory: where users, pickle and the documentation find them.
+  m.attr("__name__") = "springblock";
   sb::python::bind_errors(m);
   sb::python::bind_scene(m);
   sb::python::bind_result(m);
   sb::python::bind_run(m);
   sb::python::bind_theory(m);
+  sb::python::bind_sweep(m);
+  sb::python::bind_design(m);
+  m.attr("__name__") = "springblock._core";
 }

@@ -6,7 +6,10 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "springblock/ensemble_state.hpp"
+#include "springblock/errors.hpp"
 #include "springblock/io.hpp"
+#include "springblock/scene_state.hpp"
 
 namespace sb::python {
 namespace {
@@ -148,7 +151,19 @@ void bind_result(py::module_& m) {
       .def("to_json", [](const Result& r, const std::string& cmd) { return to_python(sb::ensemble_json(r.scene, r.ensemble, cmd)); },
            py::arg("command_line") = "python",
            "The results object `springblock run --json` prints, as a dict.")
-      .def("__repr__", &result_repr);
+      .def("__repr__", &result_repr)
+      .def(py::pickle(
+               [](const Result& r) {
+                 return py::make_tuple(sb::scene_state(r.scene).dump(), sb::ensemble_state(r.ensemble).dump());
+               },
+               [](const py::tuple& state) {
+                 if (state.size() != 2) throw sb::InputError("state", "a Result pickles as (scene, ensemble) states");
+                 auto parse = [](const py::handle& text) {
+                   return nlohmann::json::parse(text.cast<std::string>(), nullptr, false);
+                 };
+                 return Result{sb::scene_from_state(parse(state[0])), sb::ensemble_from_state(parse(state[1]))};
+               }),
+           "Pickled as its scene's and its repetitions' complete state: every number reads back the same.");
   m.def("observables", [] {
     py::list names;
     for (const auto& o : sb::observables()) names.append(py::make_tuple(o.name, o.unit));

@@ -1,34 +1,11 @@
 // springblock.run and run_many: the ensemble runs with the GIL released (other Python threads go
 // on; the repetitions use the scene's threads) and stops cleanly on Ctrl-C.
-#include <chrono>
-#include <future>
 #include <pybind11/stl.h>
 
-#include "bindings.hpp"
+#include "background.hpp"
 
 namespace sb::python {
 namespace {
-
-// Runs `work(interrupt)` on its own thread while this one, without the GIL, wakes every 0.1 s to
-// let Python handle signals: a KeyboardInterrupt sets `interrupt`, the library stops its
-// repetitions, and the exception is raised once they have.
-template <class Work>
-auto interruptible(Work work) {
-  std::atomic<bool> interrupt{false};
-  bool signalled = false;
-  decltype(work(&interrupt)) out;
-  {
-    py::gil_scoped_release release;
-    auto job = std::async(std::launch::async, [&] { return work(&interrupt); });
-    while (job.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
-      py::gil_scoped_acquire acquire;
-      if (!signalled && PyErr_CheckSignals() != 0) signalled = true, interrupt = true;
-    }
-    out = job.get();
-  }
-  if (signalled) throw py::error_already_set();
-  return out;
-}
 
 sb::Scene observed(sb::Scene scene, bool series) {
   scene.observe.series = series;
@@ -37,14 +14,14 @@ sb::Scene observed(sb::Scene scene, bool series) {
 
 Result run(const sb::Scene& scene, bool series) {
   Result r{observed(scene, series), {}};
-  r.ensemble = interruptible([&](const std::atomic<bool>* stop) { return sb::run_ensemble(r.scene, stop); });
+  r.ensemble = in_background([&](const std::atomic<bool>* stop) { return sb::run_ensemble(r.scene, stop); });
   return r;
 }
 
 std::vector<Result> run_many(const std::vector<sb::Scene>& scenes, bool series) {
   std::vector<sb::Scene> observed_scenes;
   for (const auto& s : scenes) observed_scenes.push_back(observed(s, series));
-  auto ensembles = interruptible([&](const std::atomic<bool>* stop) { return sb::run_ensembles(observed_scenes, stop); });
+  auto ensembles = in_background([&](const std::atomic<bool>* stop) { return sb::run_ensembles(observed_scenes, stop); });
   std::vector<Result> results;
   for (std::size_t i = 0; i < scenes.size(); ++i) results.push_back({observed_scenes[i], std::move(ensembles[i])});
   return results;

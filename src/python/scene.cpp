@@ -8,6 +8,7 @@
 #include "springblock/errors.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/scene_fields.hpp"
+#include "springblock/scene_state.hpp"
 #include "springblock/surface_mask.hpp"
 
 namespace sb::python {
@@ -27,7 +28,8 @@ nlohmann::json field_text(const py::handle& value) {
   return nullptr;
 }
 
-// `base` with `fields` overlaid, validated. Throws sb::InputError naming the field.
+}  // namespace
+
 sb::Scene with_fields(sb::Scene scene, const py::dict& fields) {
   nlohmann::json j = nlohmann::json::object();
   py::dict arrays;
@@ -48,6 +50,8 @@ sb::Scene with_fields(sb::Scene scene, const py::dict& fields) {
   return scene;
 }
 
+namespace {
+
 sb::Scene make_scene(const py::object& fields, const py::kwargs& more) {
   py::dict all;
   if (!fields.is_none()) {
@@ -65,6 +69,13 @@ std::string scene_repr(const sb::Scene& s) {
                 s.geometry.N, s.geometry.L_x_m, sb::pattern_label(s.pattern).c_str(), sb::method_name(s.run.method).c_str(),
                 s.reps, static_cast<unsigned long long>(s.seed));
   return text;
+}
+
+std::string scene_state_text(const sb::Scene& s) { return sb::scene_state(s).dump(); }
+
+sb::Scene scene_from_state_text(const std::string& text) {
+  const auto j = nlohmann::json::parse(text, nullptr, false);
+  return sb::scene_from_state(j);  // refuses a discarded (malformed) value, naming `state`
 }
 
 py::list field_table() {
@@ -94,7 +105,14 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("seed", [](const sb::Scene& s) { return s.seed; })
       .def_property_readonly("t0_s", &sb::Scene::t0_s, "loading time t0 [s]")
       .def_property_readonly("duration_s", &sb::Scene::duration, "simulated time [s]")
-      .def("__repr__", &scene_repr);
+      .def("__repr__", &scene_repr)
+      .def(py::pickle([](const sb::Scene& s) { return scene_state_text(s); },
+                      [](const std::string& state) { return scene_from_state_text(state); }),
+           "Pickled as its complete state (every field, the mask's blocks, the materials' columns),\n"
+           "so an unpickled scene, in this process or another, runs bit-identically.")
+      .def("__eq__", [](const sb::Scene& a, const sb::Scene& b) { return scene_state_text(a) == scene_state_text(b); },
+           py::is_operator(), "Equal when every field is: the same state, hence the same numbers when run.")
+      .def("__hash__", [](const sb::Scene& s) { return py::hash(py::str(scene_state_text(s))); });
   m.def("scene_fields", &field_table,
         "Every scene field: key (the keyword), help (meaning, default, units) and an example value.");
 }

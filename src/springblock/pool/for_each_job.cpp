@@ -1,5 +1,7 @@
 #include "springblock/pool/for_each_job.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <exception>
 #include <map>
@@ -23,10 +25,14 @@ struct Team {
 // thread has cached (linear/run_shape.cpp's closed-form modes) and its warm heap, as OpenMP's
 // threads were kept: new threads for every call cost a design search about 1% of its time.
 // Callers at the same time (Python threads) each get a team of their own.
+// A process forked from one that kept teams (Python's multiprocessing and process pools fork by
+// default on Linux) inherits the teams but not their threads: a job given to them would never
+// run. So the teams belong to the process that made them, and a child drops its parent's.
 class IdleTeams {
  public:
   std::unique_ptr<Team> take(int threads) {
     std::lock_guard lock(mu_);
+    if (owner_ != ::getpid()) forget_parents_teams();
     auto it = idle_.find(threads);
     if (it == idle_.end()) return std::make_unique<Team>(threads);
     auto team = std::move(it->second);
@@ -40,8 +46,16 @@ class IdleTeams {
   }
 
  private:
+  void forget_parents_teams() {
+    // Released, not destroyed: destroying a team joins its threads, which this process lacks.
+    for (auto& [threads, team] : idle_) (void)team.release();
+    idle_.clear();
+    owner_ = ::getpid();
+  }
+
   std::mutex mu_;
   std::map<int, std::unique_ptr<Team>> idle_;
+  pid_t owner_ = ::getpid();
 };
 
 IdleTeams& idle_teams() {
