@@ -41,4 +41,4 @@ html_title = "springblock"
 html_show_sourcelink = False
 html_copy_source = False
 html_theme_options = {"description": "Friction of hierarchical surfaces: a spring-block reproduction",
-                      "fixed_sidebar": True}
+                      "fixed_sidebar": True, "page_width": "1200px", "sidebar_width": "240px"}

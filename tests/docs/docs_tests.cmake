@@ -26,10 +26,10 @@ add_test(NAME browser_check_selftest
          COMMAND ${SPRINGBLOCK_PYTHON_TOOLS} ${CMAKE_CURRENT_LIST_DIR}/test_check_browser.py)
 set_tests_properties(browser_check_selftest PROPERTIES LABELS "browser" TIMEOUT 300)
 
-# The site's index in headless Chromium; its screenshot stays in build/browser/.
+# The site's index in headless Chromium, its screenshot kept in build/browser/, then every other page.
 add_test(NAME browser_docs
          COMMAND ${SPRINGBLOCK_PYTHON_TOOLS} -m tools.docs.check_browser ${DOCS_OUT}/html/index.html
-                 --screenshot ${BROWSER_OUT}/docs_index.png)
+                 --screenshot ${BROWSER_OUT}/docs_index.png --site ${DOCS_OUT}/html)
 set_tests_properties(browser_docs PROPERTIES LABELS "docs;browser" FIXTURES_REQUIRED docs_site TIMEOUT 300)
 
 # The report of the configured tier, as `make reproduce-all` writes it (figures and report drawn from

@@ -63,11 +63,14 @@ class CheckBrowser(unittest.TestCase):
                          "undefined_function_called", "nowhere.html: no such file", "no element with id 'nothere'"):
             self.assertIn(expected, text)
 
-    def test_the_command_exits_1_on_faults_and_2_without_a_page(self):
+    def test_the_command_exits_1_on_faults_in_a_page_or_its_site_and_2_without_a_page(self):
         env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
         run = [sys.executable, "-m", "tools.docs.check_browser"]
         p = subprocess.run(run + [self.page("bad.html")], capture_output=True, text=True, env=env)
         self.assertEqual(p.returncode, 1, p.stderr)
+        p = subprocess.run(run + [self.page("good.html"), "--site", self.dir.name], capture_output=True, text=True,
+                           env=env)
+        self.assertEqual((p.returncode, p.stdout.count("check_browser:")), (1, 3), p.stdout + p.stderr)
         p = subprocess.run(run + [self.page("absent.html")], capture_output=True, text=True, env=env)
         self.assertEqual((p.returncode, "page" in p.stderr), (2, True), p.stderr)
 

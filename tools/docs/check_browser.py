@@ -13,8 +13,9 @@ page. Links to other schemes (https:, mailto:) are not followed: the check runs 
   --screenshot FILE  a PNG of the viewport (1280x900) once the page has loaded
   --show SELECTOR    scroll the first element matching the CSS selector to the top first (e.g.
                      `table`: the screenshot then shows the page's first table)
+  --site DIR         then every other HTML page under DIR too, in the same browser
 
-Usage: python3 -m tools.docs.check_browser PAGE [--screenshot FILE] [--show SELECTOR]
+Usage: python3 -m tools.docs.check_browser PAGE [--screenshot FILE] [--show SELECTOR] [--site DIR]
 Exit 0 clean, 1 faults (one line each), 2 bad input or no Chromium.
 """
 import argparse
@@ -83,22 +84,33 @@ def link_faults(page_path, links, page_ids):
     return faults
 
 
-def check(page, chromium, screenshot=None, show=None):
-    """(faults, facts) of one page; facts: title, links, images, screenshot path."""
-    url = "file://" + os.path.realpath(page)
-    with Chromium(chromium) as b:
-        b.open(url)
-        seen = b.evaluate(INSPECT)
-        if show is not None and not b.evaluate(SCROLL % json.dumps(show)):
-            raise BrowserError(f"--show: no element matches {show!r} on {page}")
-        if screenshot:
-            b.settle(0.3)
-            b.screenshot(screenshot)
-        faults = console_faults(b.events)
+def inspect(b, page, screenshot=None, show=None):
+    """(faults, facts) of one page in the open browser b; facts: title, links, images."""
+    b.events.clear()
+    b.open("file://" + os.path.realpath(page))
+    seen = b.evaluate(INSPECT)
+    if show is not None and not b.evaluate(SCROLL % json.dumps(show)):
+        raise BrowserError(f"--show: no element matches {show!r} on {page}")
+    if screenshot:
+        b.settle(0.3)
+        b.screenshot(screenshot)
+    faults = console_faults(b.events)
     faults += [f"image not rendered: {i['src']}" for i in seen["images"] if not i["ok"]]
     faults += link_faults(page, seen["links"], set(seen["ids"]))
     return faults, {"title": seen["title"], "links": len(seen["links"]), "images": len(seen["images"]),
                     "screenshot": screenshot}
+
+
+def check(page, chromium, screenshot=None, show=None):
+    """(faults, facts) of one page in a fresh browser."""
+    with Chromium(chromium) as b:
+        return inspect(b, page, screenshot, show)
+
+
+def site_pages(site, first):
+    """Every HTML page under site except first, in order."""
+    pages = sorted(os.path.join(d, f) for d, _, fs in os.walk(site) for f in fs if f.endswith(".html"))
+    return [p for p in pages if os.path.realpath(p) != os.path.realpath(first)]
 
 
 def main(argv=None):
@@ -106,6 +118,7 @@ def main(argv=None):
     ap.add_argument("page")
     ap.add_argument("--screenshot")
     ap.add_argument("--show")
+    ap.add_argument("--site", help="also check every other HTML page under this directory")
     ap.add_argument("--chromium", default=None, help="the browser (default: chromium on PATH)")
     a = ap.parse_args(argv)
     chromium = a.chromium or find_chromium()
@@ -116,19 +129,26 @@ def main(argv=None):
         print("check_browser: no Chromium on PATH (Debian: apt-get install chromium; tools/ensure_deps.sh)",
               file=sys.stderr)
         return 2
+    if a.site and not os.path.isdir(a.site):
+        print(f"check_browser: site: no directory {a.site}", file=sys.stderr)
+        return 2
     if a.screenshot:
         os.makedirs(os.path.dirname(os.path.abspath(a.screenshot)), exist_ok=True)
+    bad = 0
     try:
-        faults, facts = check(a.page, chromium, a.screenshot, a.show)
+        with Chromium(chromium) as b:
+            for i, page in enumerate([a.page] + (site_pages(a.site, a.page) if a.site else [])):
+                faults, facts = inspect(b, page, *((a.screenshot, a.show) if i == 0 else (None, None)))
+                for f in faults:
+                    print(f"{page}: {f}")
+                shot = f"; screenshot {facts['screenshot']}" if facts["screenshot"] else ""
+                print(f"check_browser: {page} ('{facts['title']}'): {facts['links']} links, "
+                      f"{facts['images']} images, {len(faults)} fault(s){shot}")
+                bad += bool(faults)
     except BrowserError as e:
         print(f"check_browser: {a.page}: {e}", file=sys.stderr)
         return 2
-    for f in faults:
-        print(f"{a.page}: {f}")
-    shot = f"; screenshot {facts['screenshot']}" if facts["screenshot"] else ""
-    print(f"check_browser: {a.page} ('{facts['title']}'): {facts['links']} links, {facts['images']} images, "
-          f"{len(faults)} fault(s){shot}")
-    return 1 if faults else 0
+    return 1 if bad else 0
 
 
 if __name__ == "__main__":
