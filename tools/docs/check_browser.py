@@ -35,7 +35,7 @@ INSPECT = """(() => ({
   ids: Array.from(document.querySelectorAll('[id], a[name]'), e => e.id || e.name),
   title: document.title
 }))()"""
-SCROLL = "(() => { const e = document.querySelector(%s); if (!e) return false; e.scrollIntoView(); return true; })()"
+SCROLL = "(() => { const e = document.querySelector(%s); if (!e) return false; e.scrollIntoView(); window.scrollBy(0, -48); return true; })()"
 
 
 def console_faults(events):
