@@ -42,8 +42,9 @@ class Chromium:
 
     def __enter__(self):
         self.profile = tempfile.mkdtemp(prefix="springblock-chromium-")
-        args = [self.exe, "--headless=new", "--disable-gpu", "--no-first-run", "--no-default-browser-check",
-                "--remote-debugging-port=0", "--remote-allow-origins=*", f"--user-data-dir={self.profile}",
+        # --disable-dev-shm-usage: containers often give /dev/shm too little room for a renderer.
+        args = [self.exe, "--headless=new", "--disable-gpu", "--disable-dev-shm-usage", "--no-first-run",
+                "--no-default-browser-check", "--remote-debugging-port=0", "--remote-allow-origins=*", f"--user-data-dir={self.profile}",
                 f"--window-size={self.size[0]},{self.size[1]}", "--hide-scrollbars", "about:blank"]
         if os.geteuid() == 0:  # Chromium refuses to run as root inside its sandbox
             args.insert(1, "--no-sandbox")
