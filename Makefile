@@ -2,6 +2,7 @@
 #   make reproduce-all   every figure, table and the report under build/, at the paper's statistics
 #   make test            the default test tier, including every published number and claim checked
 #                        at the same tier (both read the same results: run either first)
+#   make docs            the documentation site, build/docs/html/index.html
 # TIER=paper|quick|smoke chooses the statistics of both (default paper: the paper's 20
 # repetitions; quick and smoke are for development and resolve less, see the report).
 BUILD   ?= build
@@ -11,7 +12,7 @@ METHOD  ?= event
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 CONFIG  = $(CMAKE_FLAGS) -DSPRINGBLOCK_TIER=$(TIER) -DSPRINGBLOCK_REPRO_METHOD=$(METHOD)
 
-.PHONY: deps configure build test test-develop test-sanitize bench clean reproduce-all studies
+.PHONY: deps configure build test test-develop test-sanitize bench clean reproduce-all studies docs
 
 deps:
 	@tools/ensure_deps.sh
@@ -41,6 +42,11 @@ test-sanitize: deps
 
 bench: build
 	@cmake --build $(BUILD) --target bench-report
+
+# The documentation site, build/docs/html/index.html: builds only the command and the Python
+# module it runs and documents, then Sphinx (warnings as errors) and the link and image check.
+docs: configure
+	@cmake --build $(BUILD) --target docs -j$(JOBS)
 
 clean:
 	@rm -rf $(BUILD) $(BUILD)-asan

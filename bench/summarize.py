@@ -180,7 +180,7 @@ def vs_paper_ratios(path):
 def profile_overhead(path):
     """Per scene of bench_vs_paper: the event method's median CPU time with the work profile's
     times on (event_timed) over its median without (event), from the same interleaved run. What
-    springblock run --profile costs; the README quotes it from here. Shared with readme_cost.py."""
+    springblock run --profile costs; the cost page (docs/cost.md) quotes it from here. Shared with readme_cost.py."""
     typical = in_seconds(path, medians(path))
     out = []
     for sc in sorted({n.split("/")[1] for n in typical if n.startswith("vs_paper/")}):

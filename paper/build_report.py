@@ -29,7 +29,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 from paper import report_studies  # noqa: E402
 from tables import render_tables  # noqa: E402
 from tools import summary_schema as schema  # noqa: E402
-from tools import target_cost  # noqa: E402  (CPU time by integrator, as the README's Cost section reads it)
+from tools import target_cost  # noqa: E402  (CPU time by integrator, as the documentation's cost page reads it)
 from tools.reproduction.inputs import read_tsv  # noqa: E402  (one reader of the tables)
 
 REPO = Path(__file__).resolve().parent.parent
@@ -539,8 +539,8 @@ def target_cost_blocks(data):
     wall = {t: (load_json(Path(data) / t / f"{t}.json") or {}).get("wall_seconds", 0.0) for t in cpu}
     sums = target_cost.column_sums(cpu, labels)
     B.append(("p", f"CPU time of every repetition the targets ran, by integrator, {sum(sums):.0f} s in all, beside each "
-                   f"target's wall time (a scene borrowed from another target counts where it ran; the README's "
-                   f"Cost section judges the time goals on fresh-clone runs)."))
+                   f"target's wall time (a scene borrowed from another target counts where it ran; the "
+                   f"documentation's cost page judges the time goals on fresh-clone runs)."))
     rows = [[t, f"{wall[t]:.1f}"] + [f"{cpu[t][lab]:.1f}" if lab in cpu[t] else "-" for lab in labels]
             for t in sorted(cpu, key=lambda t: -wall[t])]
     rows.append(["all", f"{sum(wall.values()):.1f}"] + [f"{x:.1f}" for x in sums])

@@ -1,5 +1,6 @@
-"""The project's Python tools: the reproduction driver and checker, the README's generated blocks,
-the cost model, the structure check.
+"""The project's Python tools: the reproduction driver and checker, the generated blocks of the
+README and the documentation, the cost model, the structure check, the documentation site and
+its browser check (tools/docs/).
 
 tools/, paper/, tables/, figures/ and bench/ are packages rooted at the repository root. A tool
 runs as a module from the root, `python3 -m tools.<name>` (CMake, CTest and the Makefile do so,

@@ -46,11 +46,11 @@ Choices fixed before any fit was looked at:
 
 Usage:
   python3 -m tools.cost_model --springblock build/src/springblock [--reps 5]
-                              [--out build/bench/cost_model.json] [--print] [--readme README.md --write]
-  python3 -m tools.cost_model --from build/bench/cost_model.json [--print] [--readme README.md --write]
+                              [--out build/bench/cost_model.json] [--print] [--page docs/cost.md --write]
+  python3 -m tools.cost_model --from build/bench/cost_model.json [--print] [--page docs/cost.md --write]
 
---print prints the Markdown block; --write replaces it in the README between the markers BEGIN
-and END (section "## Cost"). Exit codes: 0 done, 2 bad input (the field is named), 1 a run failed.
+--print prints the Markdown block; --write replaces it in the documentation's cost page
+(docs/cost.md, section "## Cost model of one repetition") between the markers BEGIN and END. Exit codes: 0 done, 2 bad input (the field is named), 1 a run failed.
 """
 import argparse
 import datetime
@@ -281,7 +281,7 @@ def replace(text, new_block):
     try:
         return replace_block(text, BEGIN, END, new_block)
     except ValueError:
-        raise BadInput(f"--readme: markers not found; put {BEGIN!r} and {END!r} in its '## Cost' section")
+        raise BadInput(f"--page: markers not found; put {BEGIN!r} and {END!r} in its cost model section")
 
 
 # ---------------------------------------------------------------- input and output
@@ -307,8 +307,9 @@ def parse(argv):
     ap.add_argument("--reps", type=int, default=5, help="repetitions per scene (default 5)")
     ap.add_argument("--out", default=os.path.join(REPO, "build", "bench", "cost_model.json"))
     ap.add_argument("--print", action="store_true", help="print the Markdown block")
-    ap.add_argument("--readme", default=os.path.join(REPO, "README.md"))
-    ap.add_argument("--write", action="store_true", help="replace the block in --readme")
+    ap.add_argument("--page", default=os.path.join(REPO, "docs", "cost.md"),
+                    help="the Markdown page holding the block (default: the documentation's cost page)")
+    ap.add_argument("--write", action="store_true", help="replace the block in --page")
     a = ap.parse_args(argv)
     if a.reps < 1:
         raise BadInput(f"--reps: must be at least 1, got {a.reps}")
@@ -330,9 +331,9 @@ def main(argv=None):
             print(a.out, file=sys.stderr)
         b = block(doc)
         if a.write:
-            with open(a.readme) as f:
+            with open(a.page) as f:
                 text = f.read()
-            write_atomic(a.readme, replace(text, b))
+            write_atomic(a.page, replace(text, b))
         if a.print:
             print(b)
     except BadInput as e:

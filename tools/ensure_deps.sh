@@ -6,7 +6,8 @@ set -euo pipefail
 packages=(cmake g++ make git libeigen3-dev libgsl-dev libgtest-dev libbenchmark-dev libcli11-dev
           nlohmann-json3-dev libfmt-dev gnuplot-nox python3-matplotlib python3-numpy python3-scipy
           universal-ctags pybind11-dev python3-pybind11 python3-pytest python3-pandas
-          libopenmpi-dev openmpi-bin libtomlplusplus-dev)
+          libopenmpi-dev openmpi-bin libtomlplusplus-dev
+          python3-sphinx python3-myst-parser chromium python3-websocket)
 [ "${SPRINGBLOCK_WITH_CLANG:-0}" = 1 ] && packages+=(clang)
 
 missing=()

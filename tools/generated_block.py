@@ -1,6 +1,6 @@
 """Generated text in hand-written files, and files written whole or not at all: shared by the
-tools that write the README's generated blocks (readme_cost.py, readme_results.py,
-cost_model.py)."""
+tools that write the generated blocks of the README and the documentation (readme_results.py;
+readme_cost.py and cost_model.py, into docs/cost.md)."""
 import os
 import tempfile
 
@@ -8,7 +8,7 @@ import tempfile
 def replace_block(text, begin, end, new_block):
     """text with everything from the marker begin to the marker end (both included) replaced by
     new_block, which carries the markers itself. ValueError when the markers are missing or out
-    of order, so a README without them is never rewritten."""
+    of order, so a page without them is never rewritten."""
     i, j = text.find(begin), text.find(end)
     if i < 0 or j < i:
         raise ValueError(f"markers not found: {begin!r} ... {end!r}")

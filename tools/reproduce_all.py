@@ -196,8 +196,8 @@ def run_targets(build, tier, logs, listing, describe):
 
 def write_run_record(rdir, tier, jobs, phases, total, compiled, fresh):
     """<build>/reproduce/last_run.json: the wall time of each phase of this run and of each target
-    (from timings.json), with the commit, the tier and the core count, so that the README's cost
-    figures are read from a file (tools/readme_cost.py) rather than typed."""
+    (from timings.json), with the commit, the tier and the core count, so that the documentation's
+    cost figures are read from a file (tools/readme_cost.py) rather than typed."""
     def git(*args):
         r = subprocess.run(["git", "-C", REPO] + list(args), capture_output=True, text=True)
         return r.stdout.strip() if r.returncode == 0 else "unknown"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The numbers of README "Sweeps and MPI": strong scaling of examples/sweep_scaling.toml on 1 and 2
-# ranks (one thread each), measured in interleaved pairs so that a change in the machine's other
-# load hits both; the per-unit run-time distribution; and rank 0's cost per unit (MPI message,
-# checkpoint append + fsync) and output bytes per unit from a sweep of 20,000 tiny units on 2
+# The numbers of the documentation's cost page (docs/cost.md, "Sweeps: memory and strong
+# scaling"): strong scaling of examples/sweep_scaling.toml on 1 and 2 ranks (one thread each),
+# measured in interleaved pairs so that a change in the machine's other load hits both; the
+# per-unit run-time distribution; and rank 0's cost per unit (MPI message, checkpoint append +
+# fsync) and output bytes per unit from a sweep of 20,000 tiny units on 2
 # ranks, dealt in batches and one at a time.
 # Usage: tools/sweep_scaling.sh BUILD_DIR [PAIRS]   (needs mpirun; root needs OMPI_ALLOW_RUN_AS_ROOT*)
 set -euo pipefail

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The CPU time of the repetitions a `make reproduce-all` run's targets ran, by integrator, from
 their documents (<build>/reproduce/<target>/<target>.json, runs[].cpu_s). One reading for the
-README's Cost section (tools/readme_cost.py) and the report (paper/build_report.py).
+documentation's cost page (tools/readme_cost.py) and the report (paper/build_report.py).
 
 A scene one target borrows from another (borrowed_from), and a document that only shows another
 target's results (source), are counted where they ran, so no repetition counts twice.

@@ -89,15 +89,15 @@ class Render(unittest.TestCase):
         return subprocess.run([sys.executable, "-m", "tools.cost_model", *args], capture_output=True, text=True,
                               env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
 
-    def test_from_prints_the_block_and_writes_the_readme(self):
-        readme = os.path.join(self.dir.name, "README.md")
-        with open(readme, "w") as f:
+    def test_from_prints_the_block_and_writes_the_page(self):
+        page = os.path.join(self.dir.name, "cost.md")
+        with open(page, "w") as f:
             f.write(f"## Cost\n\nprose\n\n{cm.BEGIN}\nold\n{cm.END}\n\nafter\n")
-        p = self.tool("--from", self.json, "--print", "--readme", readme, "--write")
+        p = self.tool("--from", self.json, "--print", "--page", page, "--write")
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertIn("| v3 | validation |", p.stdout)
         self.assertIn("6 of 6 scenes within a factor of 2", p.stdout)
-        with open(readme) as f:
+        with open(page) as f:
             text = f.read()
         self.assertNotIn("\nold\n", text)
         self.assertTrue(text.startswith("## Cost\n\nprose\n\n") and text.endswith(f"{cm.END}\n\nafter\n"))
@@ -107,7 +107,7 @@ class Render(unittest.TestCase):
         for args, field in ((["--from", self.json, "--reps", "0"], "--reps"),
                             (["--springblock", os.path.join(self.dir.name, "nothing")], "--springblock"),
                             (["--from", os.path.join(self.dir.name, "missing.json")], "--from"),
-                            (["--from", self.json, "--readme", self.json, "--write"], "--readme")):
+                            (["--from", self.json, "--page", self.json, "--write"], "--page")):
             p = self.tool(*args)
             self.assertEqual(p.returncode, 2, args)
             self.assertIn(field, p.stderr, args)

@@ -3,7 +3,7 @@
 printed as it is; several runs of one commit are judged on the median one, every total listed;
 runs of different commits, tiers or build states are refused; the goals' verdicts follow the
 numbers they are given. And bench/summarize.py's ratios against the paper's method, which the
-README's table prints: the event method's median repetition against the other side's fastest."""
+cost page's table prints: the event method's median repetition against the other side's fastest."""
 import json
 import os
 import sys
