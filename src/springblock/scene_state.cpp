@@ -77,7 +77,8 @@ nlohmann::json run_state(const RunControl& r, const ExtractionRules& x) {
           {"exact_max_run", r.exact_max_run}, {"duration_t0", num(r.duration_t0)},
           {"duration_s", num(r.duration_s)},  {"sample_dt_s", num(r.sample_dt_s)},
           {"stop_after_mu_s", r.stop_after_mu_s}, {"peak_rule", code(x.peak_rule)},
-          {"peak_drop", num(x.peak_drop)},    {"mu_d_skip_t0", num(x.mu_d_skip_t0)}};
+          {"peak_drop", num(x.peak_drop)},    {"peak_drop_fraction", num(x.peak_drop_fraction)},
+          {"peak_event_fraction", num(x.peak_event_fraction)}, {"mu_d_skip_t0", num(x.mu_d_skip_t0)}};
 }
 void run_from(const nlohmann::json& j, RunControl& r, ExtractionRules& x) {
   r.method = enum_of<Method>(j.at("method"));
@@ -93,6 +94,8 @@ void run_from(const nlohmann::json& j, RunControl& r, ExtractionRules& x) {
   r.stop_after_mu_s = j.at("stop_after_mu_s").get<bool>();
   x.peak_rule = enum_of<ExtractionRules::PeakRule>(j.at("peak_rule"));
   x.peak_drop = num(j.at("peak_drop"));
+  x.peak_drop_fraction = num(j.at("peak_drop_fraction"));
+  x.peak_event_fraction = num(j.at("peak_event_fraction"));
   x.mu_d_skip_t0 = num(j.at("mu_d_skip_t0"));
 }
 

@@ -52,7 +52,7 @@ TEST(SceneState, EveryPartHasTheMembersTheStateCarries) {
   EXPECT_EQ(members<sb::BlockMaterials>(), 5);
   EXPECT_EQ(members<sb::MaterialSegment>(), 7);
   EXPECT_EQ(members<sb::RunControl>(), 11);
-  EXPECT_EQ(members<sb::ExtractionRules>(), 3);
+  EXPECT_EQ(members<sb::ExtractionRules>(), 5);
   EXPECT_EQ(members<sb::Observables>(), 4);
 }
 
