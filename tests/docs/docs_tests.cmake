@@ -9,7 +9,7 @@ endif()
 set(DOCS_OUT ${PROJECT_BINARY_DIR}/docs)
 set(BROWSER_OUT ${PROJECT_BINARY_DIR}/browser)
 set(DOCS_BUILD_COMMAND ${SPRINGBLOCK_PYTHON_TOOLS} -m tools.docs.build --exe $<TARGET_FILE:springblock>
-    --python-dir $<TARGET_FILE_DIR:springblock_python> --out ${DOCS_OUT})
+    --python-dir ${PROJECT_BINARY_DIR}/python --out ${DOCS_OUT})
 
 # build/docs/html: Sphinx with warnings as errors, then every internal link, anchor and image
 # checked. Always a whole rebuild: the pages show the outputs of the command as built now.

@@ -114,6 +114,7 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
 void FrictionObserver::record(const Chain& c, const State& s, double mu, double mu_signed, int n_sliding) {
   last_t_ = s.t;
 
+  bool begun_here = false;  // the sample that ends loading or opens the dynamic phase is in no window
   if (!slipped_) {
     if (mu > running_max_) {
       running_max_ = mu;
@@ -124,8 +125,12 @@ void FrictionObserver::record(const Chain& c, const State& s, double mu, double 
     if (ends_at_next_sample(c, s) || (tests_drop() && falls(mu, running_max_))) {
       slipped_ = true;
       t_slip_ = s.t;
+      begun_here = true;
     }
-  } else if (s.t >= t_slip_ + cfg_.mu_d_skip_s) {
+  }
+  if (slipped_ && !dynamic_) {
+    if (dynamic_begins(c, s)) dynamic_ = true, t_dynamic_ = s.t, begun_here = true;
+  } else if (dynamic_ && !begun_here && s.t >= t_dynamic_ + cfg_.mu_d_skip_s) {
     sum_mu_ += mu;
     sum_mu_signed_ += mu_signed;
     ++n_window_;
@@ -157,6 +162,11 @@ bool FrictionObserver::falls(double mu, double running_max) const {
   return cfg_.peak_rule == ExtractionRules::PeakRule::SlidOrRelativeDrop
              ? mu < (1.0 - cfg_.peak_drop_fraction) * running_max
              : mu < running_max - cfg_.peak_drop;
+}
+
+bool FrictionObserver::dynamic_begins(const Chain& c, const State& s) const {
+  if (cfg_.peak_rule == ExtractionRules::PeakRule::Drop) return true;
+  return !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact;
 }
 
 bool FrictionObserver::ends_at_next_sample(const Chain& c, const State& s) const {
@@ -209,9 +219,13 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
     if (first > running_max_) running_max_ = first, t_max_ = t_of(k0);
     if (last > running_max_) running_max_ = last, t_max_ = t_of(k0 + taken - 1);
     running_max_signed_ = std::max({running_max_signed_, mu_signed(k0), mu_signed(k0 + taken - 1)});
+  } else if (!dynamic_) {
+    // Between the end of loading and the whole surface's slip: no window sample here, unless
+    // every block has slid already (then the first sample opens the dynamic phase: sample()).
+    if (dynamic_begins(c, s)) return 0;
   } else {
     // Dynamic phase: the window sums over the samples at or after its start.
-    const double t_win = t_slip_ + cfg_.mu_d_skip_s;
+    const double t_win = t_dynamic_ + cfg_.mu_d_skip_s;
     long j0 = 0;
     while (j0 < m && t_of(k0 + j0) < t_win) ++j0;
     const long cnt = m - j0;
@@ -242,7 +256,8 @@ long FrictionObserver::sample_sums(const Chain& c, const State& s_stretch, long 
   if (n <= 0 || contact_runs_.empty() || wants_stop()) return 0;
   if (!slipped_) return loading_stretch(c, s_stretch, k0, dt, n, stretch);
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
-  const double t_win = t_slip_ + cfg_.mu_d_skip_s;
+  if (!dynamic_ && dynamic_begins(c, s_stretch)) return 0;  // the first sample opens it: sample()
+  const double t_win = dynamic_ ? t_dynamic_ + cfg_.mu_d_skip_s : std::numeric_limits<double>::infinity();
   const bool before = t_of(k0 + n - 1) < t_win, inside = t_of(k0) >= t_win;
   if (!before && !inside) return 0;
   RingingSums& sums = ringing(stretch.forces());

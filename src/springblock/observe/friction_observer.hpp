@@ -108,6 +108,10 @@ class FrictionObserver final : public Observer {
   // rules that test it) or a large enough slip event has happened (SlidOrEvent). Neither changes
   // between switches.
   bool ends_at_next_sample(const Chain& c, const State& s) const;
+  // The mu_d window is measured from the whole surface's first slip (every contact block has
+  // slid once), whichever reading ends loading for mu_s, so that mu_d does not depend on how
+  // mu_s is read; under the pure drop rule, from the end of its loading phase.
+  bool dynamic_begins(const Chain& c, const State& s) const;
   // The sums of the forces f describe, kept for the next phase of the same run.
   RingingSums& ringing(RingingForces& f);
   // A stress snapshot is due at a sample at time t (the first sample at or after its time).
@@ -119,6 +123,8 @@ class FrictionObserver final : public Observer {
   double running_max_ = -1, t_max_ = 0, t_slip_ = std::numeric_limits<double>::quiet_NaN();
   double running_max_signed_ = -std::numeric_limits<double>::infinity();
   bool slipped_ = false;
+  bool dynamic_ = false;  // the dynamic phase, whose window gives mu_d, has begun at t_dynamic_
+  double t_dynamic_ = std::numeric_limits<double>::quiet_NaN();
   double sum_mu_ = 0, sum_mu_signed_ = 0;
   std::int64_t n_window_ = 0;
   double last_t_ = 0;
