@@ -155,6 +155,7 @@ nlohmann::json header(const SweepOptions& o, const std::vector<sweep::SweepScene
           {"ranks", s.ranks()},
           {"threads_per_rank", s.threads()},
           {"wall_s", std::chrono::duration<double>(Clock::now() - l.start).count()},
+          {"lost_ranks", out.lost_ranks},
           {"messages", out.messages},
           {"message_s", out.message_s},
           {"checkpoint_s", l.checkpoint_s},
@@ -181,7 +182,7 @@ int finish(const SweepOptions& o, const std::vector<sweep::SweepScene>& scenes, 
 }  // namespace
 
 int run_sweep(const SweepOptions& o, const std::string& command_line) {
-  auto sched = make_scheduler(o.threads, o.batch_ms / 1000);
+  auto sched = make_scheduler(o.threads, o.batch_ms / 1000, o.dead_after_s);
   const bool lead = sched->coordinator();
   std::vector<sweep::SweepScene> scenes;
   std::vector<sweep::Unit> units;
