@@ -58,7 +58,10 @@ clean:
 # The clock starts before configure, so the run record's total is the whole command's.
 # A build tree without a CMake cache is a fresh one: the record says so (the README's cost of a
 # fresh clone), rather than guessing it from how much the build compiled.
+# The targets deal their repetitions to one process's threads, not to MPI ranks: MPIRUN is refused
+# rather than ignored.
 reproduce-all:
+	@if [ -n "$(MPIRUN)" ]; then echo "reproduce-all: MPIRUN=$(MPIRUN) is not supported: the reproduction targets run on the threads of one process (JOBS); run without MPIRUN" >&2; exit 2; fi
 	@t0=$$(date +%s.%N) && fresh=$$(test -f $(BUILD)/CMakeCache.txt || echo --fresh-build) && \
 	  $(MAKE) --no-print-directory configure && \
 	  /usr/bin/python3 -m tools.reproduce_all $(BUILD) --jobs $(JOBS) --started-at $$t0 $$fresh

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -450,6 +451,20 @@ int simulate_and_write(const Context& ctx, const std::vector<LabelledScene>& sce
 
 }  // namespace
 
+namespace {
+
+// The targets deal their repetitions to one process's threads, not to MPI ranks: started by
+// mpirun -np N, each of the N copies would run the whole target and write the same file.
+void refuse_several_ranks() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* n = std::getenv(v); n && std::atoi(n) > 1)
+      throw sb::InputError("mpirun", std::string(v) + " = " + n + ": the reproduction targets run on the threads "
+                                     "of one process (--threads); under mpirun every rank would run the whole "
+                                     "target and write the same file. Run it without mpirun");
+}
+
+}  // namespace
+
 int run_target(int argc, char** argv, const std::string& target, const std::string& summary, const PlanFn& plan,
                const FinishFn& finish) {
   TargetCommandLine cl{CLI::App{target + ": " + summary}, {}, {}};
@@ -464,6 +479,7 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
   std::vector<LabelledScene> scenes;
   // Setup reads tables and other targets' documents: any failure there is the input's (exit 2).
   const int setup = shell::guarded(target, [&] {
+    refuse_several_ranks();
     ctx.emplace(make_context(cl));
     scenes = planned_scenes(*ctx, plan);
     // The output is claimed now, not after the run: a bad --out fails before any simulation.

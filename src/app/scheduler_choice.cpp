@@ -10,11 +10,12 @@
 
 namespace sb::app {
 
-std::unique_ptr<parallel::Scheduler> make_scheduler(int threads, double batch_s) {
+std::unique_ptr<parallel::Scheduler> make_scheduler(int threads, double batch_s, double silence_s) {
 #ifdef SPRINGBLOCK_HAVE_MPI
-  if (parallel::launched_by_mpirun()) return parallel::make_mpi_scheduler(threads, batch_s);
+  if (parallel::launched_by_mpirun()) return parallel::make_mpi_scheduler(threads, batch_s, silence_s);
 #else
   (void)batch_s;
+  (void)silence_s;
   const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
   if (size && std::atoi(size) > 1)
     throw InputError("mpirun", "this springblock was built without MPI (SPRINGBLOCK_MPI=OFF): every rank would "

@@ -55,7 +55,7 @@ int finish(const sweep::Report& r) {
 }  // namespace
 
 int run_sweep(const SweepOptions& o, const std::string& command_line) {
-  auto sched = make_scheduler(o.threads, o.batch_ms / 1000);
+  auto sched = make_scheduler(o.threads, o.batch_ms / 1000, o.dead_after_s);
   sweep::Spec spec;
   try {
     spec = sweep::read_spec(o.file);  // on every rank, as the scenes are expanded

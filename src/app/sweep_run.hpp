@@ -9,6 +9,7 @@ struct SweepOptions {
   std::string file, out, units;  // units: the per-unit records file, if asked
   int threads = 0;
   double batch_ms = 50;  // under MPI: a worker's target time per batch of units; 0 = one unit per request
+  double dead_after_s = 10;  // under MPI: a worker rank silent this long is taken for dead
   bool resume = false, progress = false;
 };
 

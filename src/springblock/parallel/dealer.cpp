@@ -23,15 +23,31 @@ std::vector<int> Dealer::next_batch(int rank, int count) {
   return ids;
 }
 
-void Dealer::finished(int id, int rank, nlohmann::json record) {
-  if (record.is_null()) return;  // interrupted: still held, reported as unfinished
-  holder_.erase(id);
+bool Dealer::finished(int id, int rank, nlohmann::json record) {
+  if (record.is_null()) return false;  // interrupted: still held, reported as unfinished
+  const auto held = holder_.find(id);
+  if (held == holder_.end() || held->second != rank) return false;
+  holder_.erase(held);
   if (hooks_.finished) hooks_.finished(id, rank, std::move(record));
+  return true;
 }
 
 void Dealer::give_back(int id) {
   holder_.erase(id);
   queue_.push_front(id);
+}
+
+std::vector<int> Dealer::reclaim(int rank) {
+  std::vector<int> ids;
+  for (auto it = holder_.begin(); it != holder_.end();)
+    if (it->second == rank) {
+      ids.push_back(it->first);
+      it = holder_.erase(it);
+    } else {
+      ++it;
+    }
+  for (auto it = ids.rbegin(); it != ids.rend(); ++it) queue_.push_front(*it);
+  return ids;
 }
 
 void Dealer::tick() {

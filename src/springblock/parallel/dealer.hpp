@@ -25,10 +25,16 @@ class Dealer {
   // The next `count` units (fewer when fewer are left; none when interrupted) for `rank`, from
   // the front of the queue, so the dearest still go first; logged as one assignment.
   std::vector<int> next_batch(int rank, int count);
-  // A unit's result came back; a null record (cut short by an interrupt) stays unfinished.
-  void finished(int id, int rank, nlohmann::json record);
+  // A unit's result came back; a null record (cut short by an interrupt) stays unfinished. A
+  // record from a rank that no longer holds the unit (it was dealt again after that rank was taken
+  // for dead, and may be done already) is dropped, so no unit is counted twice: returns whether it
+  // was taken.
+  bool finished(int id, int rank, nlohmann::json record);
   // A worker gave a unit back unrun (it was interrupted): another rank will run it.
   void give_back(int id);
+  // Every unit `rank` holds goes back to the front of the queue (that rank was taken for dead);
+  // returns them, in increasing order.
+  std::vector<int> reclaim(int rank);
   bool interrupted() const { return interrupt_ && interrupt_->load(); }
   bool queue_empty() const { return queue_.empty(); }
   int in_flight() const { return static_cast<int>(holder_.size()); }

@@ -35,6 +35,7 @@ struct Outcome {
   bool interrupted = false;
   std::vector<InFlight> unfinished;  // handed out but not finished when the run stopped
   std::vector<std::string> notes;    // e.g. a worker rank that was interrupted and gave back its units
+  std::vector<int> lost_ranks;      // worker ranks taken for dead (their units were dealt again)
   // The coordinator's cost of talking to workers (the rank-0 bottleneck of the README's model):
   // messages received from workers and the seconds spent receiving, decoding and answering
   // them (the hooks, e.g. checkpoint writes, not included: their owner times them).

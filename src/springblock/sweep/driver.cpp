@@ -118,6 +118,7 @@ nlohmann::json header(const OutputOptions& o, const std::vector<SweepScene>& sce
           {"ranks", s.ranks()},
           {"threads_per_rank", s.threads()},
           {"wall_s", l.elapsed()},
+          {"lost_ranks", out.lost_ranks},
           {"messages", out.messages},
           {"message_s", out.message_s},
           {"checkpoint_s", l.checkpoint_s},

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <map>
 #include <exception>
@@ -16,6 +17,8 @@
 #include <thread>
 
 #include "springblock/parallel/dealer.hpp"
+#include "springblock/parallel/liveness.hpp"
+#include "springblock/parallel/mpi/outbox.hpp"
 
 namespace sb::parallel {
 namespace {
@@ -25,21 +28,44 @@ namespace {
 // doubles, exactly.
 constexpr int kRequestTag = 1;  // worker -> 0: {done, returned, want, idle, stop | error}
 constexpr int kAssignTag = 2;   // 0 -> worker: unit ids, none when it has nothing for that rank now
+constexpr int kBeatTag = 3;     // worker -> 0: nothing, "still here" while its threads run
+// The answer to a rank taken for dead that speaks again: it stops (its units went elsewhere).
+constexpr int kTakenForDead = -1;
 
 double now_s() { return MPI_Wtime(); }
 
+// After a rank was lost, MPI_Finalize may wait for it for ever (Open MPI 4.1 with
+// --enable-recovery: its closing fence hung in about one run in three here). So the job is ended
+// at exit instead, once the output is out: MPI_Abort stops the ranks still in MPI, and mpirun
+// then exits (status 0 under --enable-recovery, which ignores the ranks' exit codes anyway).
+extern "C" void end_job_after_lost_rank() {
+  std::fflush(nullptr);
+  std::fprintf(stderr, "springblock: the job lost a rank, so it ends with MPI_Abort rather than a shutdown that "
+                       "would wait for that rank; the results are complete\n");
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, 0);
+}
+
 class MpiScheduler : public Scheduler {
  public:
-  MpiScheduler(int threads, double batch_s) : batch_s_(batch_s) {
+  MpiScheduler(int threads, double batch_s, double silence_s) : batch_s_(batch_s), silence_s_(silence_s) {
     int provided = 0;
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
     if (provided < MPI_THREAD_FUNNELED) throw std::runtime_error("MPI does not support MPI_THREAD_FUNNELED");
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
+    // A send to a dead rank may fail rather than end this process: the coordinator then takes
+    // that rank for dead.
+    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
     threads_ = resolve_threads(threads);
   }
   // Every rank gets here: run() aborts the job itself when one of them fails inside it.
-  ~MpiScheduler() override { MPI_Finalize(); }
+  ~MpiScheduler() override {
+    if (lost_.empty())
+      MPI_Finalize();
+    else
+      std::atexit(end_job_after_lost_rank);  // after the caller's output (the ensemble is printed later)
+  }
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
   int threads() const override { return threads_; }
@@ -78,7 +104,11 @@ class MpiScheduler : public Scheduler {
   // Answers one waiting worker request (false if none): takes in the records and given-back
   // units it carries and sends the next batch; an empty answer to a worker that said it is idle
   // retires that rank (--open_ranks).
-  bool answer_one(Dealer& dealer, int& open_ranks, int all_slots);
+  bool answer_one(Dealer& dealer, int& open_ranks, int all_slots, Liveness& live);
+  // Heartbeats received: their ranks are heard.
+  void take_beats(Liveness& live);
+  // `rank` is taken for dead: its units go back to the queue, its answers are abandoned.
+  void bury(int rank, Dealer& dealer, int& open_ranks, Liveness& live);
   void work(const UnitRunner& run_unit, const std::atomic<bool>* interrupt);
   std::vector<int> ask(const nlohmann::json& message);
   // How many units to ask for: enough to keep this rank's threads busy about batch_s_, from the
@@ -86,7 +116,10 @@ class MpiScheduler : public Scheduler {
   int batch_size(double unit_s) const;
 
   int rank_ = 0, ranks_ = 1, threads_ = 1;
-  double batch_s_ = 0;
+  double batch_s_ = 0, silence_s_ = 10;
+  double last_sent_ = 0;  // a worker's last message to rank 0
+  std::vector<int> lost_;  // ranks taken for dead
+  Outbox outbox_;  // lives until MPI_Finalize: abandoned sends may still read their buffers
   long messages_ = 0;
   double message_s_ = 0;
 };
@@ -95,14 +128,20 @@ Outcome MpiScheduler::coordinate(const std::vector<int>& ids, const UnitRunner& 
                                  const std::atomic<bool>* interrupt, int all_slots) {
   Dealer dealer(ids, hooks, interrupt);
   UnitPool pool(threads_, [&](int id) { return run_unit(id, interrupt); });
-  int open_ranks = ranks_ - 1;  // worker ranks not yet retired
+  int open_ranks = ranks_ - 1;  // worker ranks not yet retired nor taken for dead
+  Liveness live(ranks_, silence_s_, now_s());
   for (;;) {
     if (dealer.interrupted() && pool.busy() == 0) break;  // the caller aborts the workers
     if (!dealer.interrupted() && dealer.queue_empty() && pool.busy() == 0 && open_ranks == 0) break;
     // Short waits while workers may be asking: a request is answered within about a millisecond.
     serve_pool(pool, dealer, 0, std::chrono::milliseconds(open_ranks > 0 ? 1 : 100));
     bool answered = false;
-    while (open_ranks > 0 && !dealer.interrupted() && answer_one(dealer, open_ranks, all_slots)) answered = true;
+    // Ranks taken for dead are still heard while rank 0 deals: one that was only stalled is told to stop.
+    while ((open_ranks > 0 || !lost_.empty()) && !dealer.interrupted() && answer_one(dealer, open_ranks, all_slots, live))
+      answered = true;
+    take_beats(live);
+    for (int r : live.newly_dead(now_s())) bury(r, dealer, open_ranks, live);
+    outbox_.reap();
     // With no unit left to run itself, rank 0 would spin on MPI_Iprobe and take a core from the
     // workers finishing the last units: a short nap instead (it bounds the answer's delay). Not
     // while units remain: its pool is empty for a moment after each of its own units.
@@ -110,13 +149,44 @@ Outcome MpiScheduler::coordinate(const std::vector<int>& ids, const UnitRunner& 
       std::this_thread::sleep_for(std::chrono::microseconds(500));
     dealer.tick();
   }
+  if (!dealer.interrupted()) outbox_.drain();  // the retired ranks' last answers
   Outcome o = dealer.outcome();
+  o.lost_ranks = lost_;
   o.messages = messages_;
   o.message_s = message_s_;
   return o;
 }
 
-bool MpiScheduler::answer_one(Dealer& dealer, int& open_ranks, int all_slots) {
+void MpiScheduler::take_beats(Liveness& live) {
+  for (;;) {
+    int flag = 0;
+    MPI_Status st;
+    MPI_Iprobe(MPI_ANY_SOURCE, kBeatTag, MPI_COMM_WORLD, &flag, &st);
+    if (!flag) return;
+    MPI_Recv(nullptr, 0, MPI_BYTE, st.MPI_SOURCE, kBeatTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    live.heard(st.MPI_SOURCE, now_s());
+  }
+}
+
+void MpiScheduler::bury(int rank, Dealer& dealer, int& open_ranks, Liveness& live) {
+  const double silent = live.silent_for(rank, now_s());
+  live.mark_dead(rank);
+  lost_.push_back(rank);
+  outbox_.abandon(rank);
+  const auto ids = dealer.reclaim(rank);
+  --open_ranks;
+  std::string list;
+  for (int id : ids) list += (list.empty() ? "" : ", ") + std::to_string(id);
+  char text[160];
+  std::snprintf(text, sizeof text, "rank %d stopped answering: silent %.1f s (limit %.1f s), taken for dead; ", rank,
+                silent, silence_s_);
+  // Said now, not with the notes at the end: when it was noticed is part of the message.
+  std::fprintf(stderr, "springblock: %s%s\n", text,
+               (ids.empty() ? std::string("it held no unit") : "its unit(s) " + list + " were dealt again").c_str());
+  std::fflush(stderr);
+}
+
+bool MpiScheduler::answer_one(Dealer& dealer, int& open_ranks, int all_slots, Liveness& live) {
   const double t0 = now_s();
   int flag = 0;
   MPI_Status st;
@@ -127,6 +197,11 @@ bool MpiScheduler::answer_one(Dealer& dealer, int& open_ranks, int all_slots) {
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(n));
   const int src = st.MPI_SOURCE;
   MPI_Recv(bytes.data(), n, MPI_BYTE, src, kRequestTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  live.heard(src, now_s());
+  if (live.dead(src)) {  // back from the dead: its units went elsewhere, nothing it brings counts
+    outbox_.send({kTakenForDead}, src, kAssignTag, MPI_COMM_WORLD);
+    return true;
+  }
   auto msg = nlohmann::json::from_msgpack(bytes);
   message_s_ += now_s() - t0;  // receiving and decoding; the hooks (checkpoint) are timed by their owner
   if (msg.contains("error"))
@@ -148,8 +223,13 @@ bool MpiScheduler::answer_one(Dealer& dealer, int& open_ranks, int all_slots) {
   }
   dealer.settle();  // the records and the new assignment in one write, before the answer goes
   const double t1 = now_s();
-  MPI_Send(ids.data(), static_cast<int>(ids.size()), MPI_INT, src, kAssignTag, MPI_COMM_WORLD);
-  if (ids.empty() && msg.value("idle", false)) --open_ranks;
+  const bool retire = ids.empty() && msg.value("idle", false);
+  if (!outbox_.send(std::move(ids), src, kAssignTag, MPI_COMM_WORLD)) {
+    bury(src, dealer, open_ranks, live);  // unreachable
+  } else if (retire) {
+    --open_ranks;
+    live.forget(src);
+  }
   ++messages_;
   message_s_ += now_s() - t1;
   return true;
@@ -157,6 +237,7 @@ bool MpiScheduler::answer_one(Dealer& dealer, int& open_ranks, int all_slots) {
 
 std::vector<int> MpiScheduler::ask(const nlohmann::json& message) {
   const auto bytes = nlohmann::json::to_msgpack(message);
+  last_sent_ = now_s();
   MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, 0, kRequestTag, MPI_COMM_WORLD);
   MPI_Status st;
   MPI_Probe(0, kAssignTag, MPI_COMM_WORLD, &st);
@@ -183,6 +264,8 @@ void MpiScheduler::work(const UnitRunner& run_unit, const std::atomic<bool>* int
   double unit_s = 0;              // running mean of this rank's unit wall time
   nlohmann::json msg = nlohmann::json::object();  // what the next request carries
   bool more = true;               // rank 0 may still have units for this rank
+  const double beat_s = heartbeat_s(silence_s_);
+  last_sent_ = now_s();
   for (;;) {
     const bool stop = interrupt && interrupt->load();
     if (stop)
@@ -200,12 +283,21 @@ void MpiScheduler::work(const UnitRunner& run_unit, const std::atomic<bool>* int
       if (stop) msg["stop"] = true;
       const auto ids = ask(msg);
       msg = nlohmann::json::object();
+      if (ids.size() == 1 && ids[0] == kTakenForDead) {
+        std::fprintf(stderr, "springblock: rank %d was silent too long and was taken for dead; its units were "
+                             "dealt to other ranks: it stops\n", rank_);
+        return;  // the pool's running units finish and are dropped
+      }
       todo.insert(todo.end(), ids.begin(), ids.end());
       if (ids.empty()) {
         more = false;
         if (idle) return;
       }
       continue;
+    }
+    if (now_s() - last_sent_ >= beat_s) {
+      last_sent_ = now_s();
+      MPI_Send(nullptr, 0, MPI_BYTE, 0, kBeatTag, MPI_COMM_WORLD);
     }
     auto d = pool.collect(std::chrono::milliseconds(100));
     if (!d) continue;
@@ -228,8 +320,8 @@ void MpiScheduler::work(const UnitRunner& run_unit, const std::atomic<bool>* int
 
 }  // namespace
 
-std::unique_ptr<Scheduler> make_mpi_scheduler(int threads, double batch_s) {
-  return std::make_unique<MpiScheduler>(threads, batch_s);
+std::unique_ptr<Scheduler> make_mpi_scheduler(int threads, double batch_s, double silence_s) {
+  return std::make_unique<MpiScheduler>(threads, batch_s, silence_s);
 }
 
 }  // namespace sb::parallel
