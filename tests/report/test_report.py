@@ -8,7 +8,8 @@ n, d, z, k, both thresholds, Delta) equal the summary's to the printed precision
 appears, and wherever it appears its verdict and its comparison lines equal the summary's; the
 claims overview, the tier-resolution table and the z-score numbers equal the summary's; no
 placeholder ('?', None, nan, unchecked) appears anywhere; the slip-event, graded and composite
-studies' tables are their documents' (check_beyond.py).
+studies' tables are their documents' (check_beyond.py); the default reading of mu_s is the one the
+extraction study's criterion adopts, and reads the tables' mu_s.
 
 Usage: PYTHONPATH=<repository root> test_report.py --data DIR (DIR/summary.json and the target documents; CTest: the
 configured tier's build/reproduce)."""
@@ -269,6 +270,35 @@ def check_slip_events(md, data):
         check(same_number(row[4].rstrip("%"), 100 * single), f"slip events {sc['id']}: single {row[4]} != {single}")
 
 
+def check_reading(md, s, data):
+    """The default reading of mu_s is the one the criterion of choices.md adopts on the committed
+    extraction study (rule, threshold and sample spacing), the report says so, and at the paper
+    tier the study's reading of every row under that default equals the tables' mu_s (same draws)."""
+    from tools.reproduction import readings
+    with open(os.path.join(REPO, "paper", "data", "extraction.json")) as f:
+        study = json.load(f)
+    j = readings.judgement(study, os.path.join(REPO, "tables"))
+    adopted = j["adoption"]["adopted"]
+    spacing = j["spacing"][adopted]["default"]
+    with open(os.path.join(data, "tab_pat0", "tab_pat0.json")) as f:
+        scene = json.load(f)["scenes"][0]["result"]["scene"]
+    threshold = {"slid_or_drop": "peak_drop", "drop": "peak_drop", "slid_or_relative_drop": "peak_drop_fraction",
+                 "slid_or_event": "peak_event_fraction"}.get(scene["peak_rule"])
+    default = scene["peak_rule"] + (f"_{scene[threshold]:g}" if threshold else "")
+    check(default == adopted, f"reading: the scenes' default {default} is not the adopted {adopted}")
+    check(abs(scene["sample_dt_s"] - float(spacing.replace("ms", "")) * 1e-3) < 1e-15,
+          f"reading: the scenes' sample spacing {scene['sample_dt_s']} s is not the criterion's {spacing}")
+    check(f"The rule adopts **{adopted}**" in md, "reading: the report does not state the adopted reading")
+    if s["tier"] != "paper" or study.get("tier") != "paper":
+        return
+    by_row = {sc["x"]["row_id"]: sc["result"]["mu_s"]["mean"] for sc in study["scenes"]
+              if sc["x"]["rule"] == adopted and sc["x"].get("sample_dt") == spacing}
+    for r in s["rows"]:
+        if r["coef"] == "mu_s" and r["row_id"] in by_row:
+            check(abs(by_row[r["row_id"]] - r["ours"]) <= 1e-9 * abs(r["ours"]),
+                  f"reading: {r['row_id']} mu_s {r['ours']} in the tables, {by_row[r['row_id']]} in the study")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", required=True)
@@ -289,6 +319,7 @@ def main():
     check_placeholders(md)
     check_target_cost(md, a.data)
     check_slip_events(md, a.data)
+    check_reading(md, s, a.data)
     for materials_study in (check_beyond.check_graded, check_beyond.check_composite):
         materials_study(md, a.data, REPO, tables, lambda message: check(False, message))
     for f in FAILURES:
