@@ -126,19 +126,20 @@ def adoption(cv):
     return {"adopted": adopted, "majority": best, "votes": votes, "beats_baseline": beats, "reason": reason}
 
 
-def row_spread(rd, rule):
-    """Per row: ours under the given reading, the range over the admissible readings, and whether
-    the verdict on the published number holds under every admissible reading."""
+def row_spread(rd, rule, spacing=DEFAULT_SPACING):
+    """Per row: ours under the given reading and sample spacing, the range over the admissible
+    readings at that spacing, and whether the verdict on the published number holds under every
+    admissible reading."""
     out = []
-    for r in rd.rows:
+    for r in rd.measured(rule, rd.rows, spacing):
         values, verdicts = {}, {}
         for a in rd.admissible:
-            if r in rd.stat.get((a, DEFAULT_SPACING), {}):
-                values[a] = rd.stat[(a, DEFAULT_SPACING)][r][0]
-                verdicts[a] = rd.compare(a, r)["verdict"]
-        c = rd.compare(rule, r)
+            if r in rd.stat.get((a, spacing), {}):
+                values[a] = rd.stat[(a, spacing)][r][0]
+                verdicts[a] = rd.compare(a, r, spacing)["verdict"]
+        c = rd.compare(rule, r, spacing)
         out.append({"row_id": r, "published": float(rd.pub[r]["mu_s"]), "err": float(rd.pub[r]["mu_s_err"]),
-                    "ours": rd.stat[(rule, DEFAULT_SPACING)][r][0], "sem": rd.stat[(rule, DEFAULT_SPACING)][r][1],
+                    "ours": rd.stat[(rule, spacing)][r][0], "sem": rd.stat[(rule, spacing)][r][1],
                     "z": c["z"], "verdict": c["verdict"],
                     "low": min(values.values()), "high": max(values.values()),
                     "verdicts": sorted(set(verdicts.values())),
@@ -164,6 +165,7 @@ def judgement(doc, tables):
     rd = Readings(doc, published_rows(tables))
     cv = cross_validate(rd)
     adopt = adoption(cv)
+    spacing = {rule: spacing_effect(rd, rule) for rule in sorted({BASELINE, adopt["adopted"]})}
     return {
         "criterion": "paper/choices.md, 'Reading mu_s: the family, and how one is chosen'",
         "rows": len(rd.rows),
@@ -171,8 +173,11 @@ def judgement(doc, tables):
         "readings": [dict(rd.judge(rule, rd.rows), admissible=rule in rd.admissible) for rule in rd.order],
         "cross_validation": cv,
         "adoption": adopt,
-        "spread": row_spread(rd, adopt["adopted"]),
-        "spacing": {rule: spacing_effect(rd, rule) for rule in sorted({BASELINE, adopt["adopted"]})},
+        "spacing": spacing,
+        # The systematic spread of the numbers in use: the adopted reading at the spacing the
+        # spacing criterion set.
+        "spread_spacing": spacing[adopt["adopted"]]["default"],
+        "spread": row_spread(rd, adopt["adopted"], spacing[adopt["adopted"]]["default"]),
     }
 
 
