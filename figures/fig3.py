@@ -52,9 +52,9 @@ for col, key in enumerate(("a", "b")):
             edges = [i * (lx_cm or 1) for i in range(len(contact) + 1)]
             ax.stairs([0.05 + 0.1 * c for c in contact], edges, color="black", lw=0.8, baseline=None)
         t = e.get("t_s")
-        ax.text(0.99, 0.95, f"{label}" + (f", t = {1e3 * t:.0f} ms" if isinstance(t, (int, float)) else ""),
+        ax.text(0.99, 0.86, f"{label}" + (f", t = {1e3 * t:.0f} ms" if isinstance(t, (int, float)) else ""),
                 transform=ax.transAxes, ha="right", va="top", fontsize=7,
-                bbox=dict(fc="white", ec="none", alpha=0.8))
+                bbox=dict(fc="white", ec="none", alpha=0.8, pad=1.5))
         if col == 0:
             ax.set_ylabel(r"$|f_i|/F_{n}$")
         if row == len(cases[key]) - 1:

@@ -5,10 +5,10 @@ move our numbers, so a disagreement with a published value can be told apart fro
 Scene: three representative surfaces with default parameters: smooth N = 360, L_x = 7.2 cm
 (pat0_r01); periodic:10,10 at the same size (pat0_r06); hierarchical:24,8,1 at N = 120,
 L_x = 2.4 cm (pat1_r08). Smoke tier: the smooth scene only. For each surface, variants of one
-choice at a time around the baseline (mu_s rule all_slipped, mu_d_skip 0.25 t0, duration 4 t0,
-the method's default accuracy): the drop rule for mu_s at thresholds 0.05, 0.02 and 0.1;
-mu_d_skip 0 and 0.5 t0; duration 3 t0 and
-6 t0; and the integrator accuracy tightened (rk4: dt 5e-8 s instead of 1e-7 s; event: tol 1e-10,
+choice at a time around the baseline (mu_s rule slid_or_drop 0.1, samples every 1e-3 ms,
+mu_d_skip 0.25 t0, duration 4 t0, the method's default accuracy): the mu_s rule all_slipped,
+slid_or_drop at 0.05 and 0.2, and the pure drop rule at 0.05 (no all-slid bound); samples every
+1e-2 ms; mu_d_skip 0 and 0.5 t0; duration 3 t0 and 6 t0; and the integrator accuracy tightened (rk4: dt 5e-8 s instead of 1e-7 s; event: tol 1e-10,
 two decades below the default 1e-8). Every variant of a surface uses the seed its table row has
 in its table, so the repetitions see the same micro coefficients and the differences to the
 baseline are paired, free of draw-to-draw noise; the baseline is then the row itself, and
@@ -18,7 +18,7 @@ baseline; the report quotes them next to the z values.
 Cost: the rule and run-length variants of a surface see one trajectory, so sb::run_ensembles
 simulates it once (to 6 t0) and reads every variant off it (trajectory_from in the JSON); the
 numbers are bit-identical to separate runs (tests/unit/test_shared_trajectory.cpp). Only the
-accuracy variant is a simulation of its own. Paper tier: 77 s before, 26 s with sharing.
+accuracy and sample-spacing variants are simulations of their own. Paper tier: 77 s before, 26 s with sharing.
 */
 #include <fmt/format.h>
 
@@ -39,10 +39,12 @@ int main(int argc, char** argv) {
         const bool rk4 = ctx.method == sb::Method::RK4;
         const std::vector<Variant> variants = {
             {"baseline", "", ""},
-            // The loading-phase rule for mu_s: the default (all contact blocks slid once)
-            // against the drop rule at three thresholds.
-            {"peak_rule", "peak_rule", "drop"}, {"peak_rule", "peak_rule", "drop:0.02"},
-            {"peak_rule", "peak_rule", "drop:0.1"},
+            // The loading-phase rule for mu_s: the default (a drop of 0.1 or every contact block
+            // slid, whichever first) against its second half alone, other drops, and a drop
+            // without the all-slid bound; and the sample spacing used before the default's.
+            {"peak_rule", "peak_rule", "all_slipped"}, {"peak_rule", "peak_rule", "slid_or_drop:0.05"},
+            {"peak_rule", "peak_rule", "slid_or_drop:0.2"}, {"peak_rule", "peak_rule", "drop:0.05"},
+            {"sample_dt", "sample_dt", "1e-2ms"},
             {"mu_d_skip", "mu_d_skip", "0"}, {"mu_d_skip", "mu_d_skip", "0.5"},
             {"duration", "duration", "3t0"}, {"duration", "duration", "6t0"},
             {"accuracy", rk4 ? "dt" : "tol", rk4 ? "5e-8s" : "1e-10"}};
@@ -59,7 +61,7 @@ int main(int argc, char** argv) {
             // variants bracket it.
             repro::set(ls.scene, "duration", "4t0");
             if (*v.key) {
-              // "drop:X" selects the drop rule with threshold X.
+              // "rule:X" selects the rule with threshold X.
               const auto colon = v.value.find(':');
               repro::set(ls.scene, v.key, v.value.substr(0, colon));
               if (colon != std::string::npos) repro::set(ls.scene, "peak_drop", v.value.substr(colon + 1));
