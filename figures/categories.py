@@ -36,13 +36,14 @@ def draw(args, doc, target, title):
                 xs += [i - 0.4 + j * w, i - 0.4 + (j + 1) * w]
                 ys += [c, c]
             pc.plot(xs, ys, color="black", lw=0.6, drawstyle="default")
-            pc.text(i, -0.55, f"S/S$_{{tot}}$={frac:.3g}", ha="center", va="top", fontsize=6)
+            # The fraction alone: "S/S_tot = ..." in every slot overlaps its neighbours.
+            pc.text(i, -0.55, f"{frac:.3g}", ha="center", va="top", fontsize=6)
         else:
             pc.text(i, 0.5, "profile\nunavailable", ha="center", va="center", fontsize=6, color="#B00000")
     pc.set_ylim(-1.2, 1.4)
     pc.set_yticks([])
     pc.grid(False)
-    pc.set_ylabel("profile")
+    pc.set_ylabel("profile,\nS/S$_{tot}$ below", fontsize=7)
     pc.set_xticks(range(len(sc)))
     pc.set_xticklabels(names, fontsize=6.5)
     pa.legend(fontsize=6)

@@ -35,7 +35,8 @@ else:
         ax.set_xticklabels([i.split("_r")[1] for i in ids], fontsize=5.5)
         ax.set_ylabel(f"t{table}: z of mu_s")
         if p == 0:
-            ax.legend(fontsize=6, ncol=3, loc="lower left")
+            # Above the panel: inside it, the legend hid the outliers of the worst layouts.
+            ax.legend(fontsize=6, ncol=5, loc="lower center", bbox_to_anchor=(0.5, 1.0), frameon=False)
     ax = axes[3]
     cuts = ["1", "2", "3"]
     for j, v in enumerate(doc["variants"]):
