@@ -52,9 +52,11 @@ def work_precision_panels(pa, pb, doc, extra):
                     spot = next((q for q in tags if abs(q[0] / r[key] - 1) < 0.5 and abs(q[1] / r["error"] - 1) < 0.5),
                                 (r[key], r["error"]))
                     tags.setdefault(spot, []).append(tag)
+                # Slanted labels: on these falling curves, labels written level from neighbouring
+                # points run into each other; slanted ones stay parallel.
                 for (x, y), names in tags.items():
                     ax.annotate(", ".join(names), (x, y), fontsize=5.5, xytext=(3, 3), textcoords="offset points",
-                                color=c)
+                                color=c, rotation=35, rotation_mode="anchor")
             elif ax is pb and pts:
                 # No right-hand side evaluated: no point on this axis; its error level is drawn
                 # across the panel so the comparison is still there.
