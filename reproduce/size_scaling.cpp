@@ -29,7 +29,7 @@ at the first slip (stop_after_mu_s: mu_s only). To the first slip over 7.2 cm: s
 patterned surfaces at fixed L_x stop at N = 3600; at fixed l_x every surface reaches 108000
 (about 1.6 s per repetition at 10800). Repetitions: the tier's (20 at the paper tier) up to
 N = 1080, then at most 10 (3600, 10800), 5 (36000) and 3 (108000). The smoke tier stops at 360.
-Criterion, fixed before any run (paper/choices.md, "Size scaling"): paper/size_scaling.py fits
+Criterion, fixed before any run (paper/choices.md, "Size scaling"): paper/scaling_fits.py fits
 each family's mu against N by weighted least squares on the repetitions' standard errors, (i)
 mu = a + b log10 N and (ii) mu = a + b N^-c (scipy curve_fit, its covariance), each judged by its
 chi^2 p-value (adequate when p >= 0.01). A candidate variable X collapses a surface's two families
@@ -37,7 +37,7 @@ for a quantity when the one curve mu = a + b X^-c fitted to both families' point
 adequate by the same rule; a candidate that is constant over a family can collapse only if that
 family is flat.
 Cost: about 10 CPU minutes at the paper tier (the document's wall_seconds and each scene's cpu_s).
-Output: every scene's statistics (runs dropped), with x = {family, surface, N, L_x_cm, l_x_cm,
+Output: every scene's statistics and runs (their cpu_s are the study's cost), with x = {family, surface, N, L_x_cm, l_x_cm,
 K_int_over_K_s, elastic_length_cm, Lambda, n_e, groove_blocks, whole_run}.
 */
 #include <algorithm>
@@ -109,7 +109,6 @@ int main(int argc, char** argv) {
                    {"Lambda", L_cm / ell_cm}, {"n_e", std::sqrt(ratio)}, {"groove_blocks", groove},
                    {"whole_run", whole}},
                   s};
-              ls.keep_runs = false;
               out.push_back(ls);
             }
         return out;
