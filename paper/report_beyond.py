@@ -185,6 +185,17 @@ def _adequate(f):
     return "-" if not f.get("converged") else "adequate" if f["adequate"] else "inadequate"
 
 
+def _last_step(doc, t):
+    """A series' change between its last two N, in combined standard errors."""
+    from paper import scaling_fits as sf
+
+    pts = sf.points(doc, t["surface"], t["family"], t["quantity"])
+    (xa, ya, sa), (xb, yb, sb) = pts[-2], pts[-1]
+    d = yb - ya
+    return (f"{t['surface']} {t['quantity']} {xa['N']} -> {xb['N']}: {d:+.4f} "
+            f"({d / math.hypot(sa, sb):+.1f} combined standard errors)")
+
+
 def size_scaling_blocks(doc, path, figs):
     """The size-scaling study: question and criterion, scenes and cost, each family's trends, the
     collapse test, the cost per repetition. Fits by paper/scaling_fits.py (the figure's too)."""
@@ -248,6 +259,11 @@ def size_scaling_blocks(doc, path, figs):
     B.append(("p", "Series with no resolved trend (an adequate log-linear fit whose change per decade is within 3 "
                    "of its standard errors of zero): " + ("; ".join(f"{t['surface']} {t['family']} {t['quantity']}"
                                                                for t in flat) or "none") + "."))
+    B.append(("p", "At fixed L_x the coarsest chains have blocks longer than ell (n_e < 1, K_int < K_s: the paper's "
+                   "other regime) and patterns of one-block pawls, so that family mixes the body's size with how "
+                   "finely it is discretised. The last step of each of its series (a step of many standard errors says "
+                   "its finest chain is not yet the continuum limit): " + "; ".join(_last_step(doc, t) for t in trends if t["family"] == "fixed_length")
+                   + "."))
     cost = []
     for s in scenes:
         r = s["result"].get("runs", [])
