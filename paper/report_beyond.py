@@ -213,7 +213,8 @@ def size_scaling_blocks(doc, path, figs):
                f"scaling'). {doc['criterion']} A fit whose chi^2 is inadequate keeps its parameter errors as the "
                "standard errors give them: they then understate the uncertainty."),
          ("p", "The chain's elastic length ell = l_x sqrt(K_int/K_s) = l_z sqrt(E/G) sqrt((N-1)/N) is about "
-               f"{scenes[-1]['x']['elastic_length_cm']:.3f} cm whatever N and L_x, because K_int grows as N / L_x and K_s "
+               f"{scenes[-1]['x']['elastic_length_cm']:.3f} cm whatever N and L_x, because K_int grows as N / L_x "
+               "and K_s "
                "falls as L_x / N. At fixed L_x the chain's length in elastic lengths, Lambda = L_x / ell, is fixed and "
                "the blocks per elastic length n_e = ell / l_x grow as N; at fixed l_x it is the other way round; N "
                "itself counts the independent micro thresholds. The load per area and t0 are the same in every "
@@ -262,7 +263,8 @@ def size_scaling_blocks(doc, path, figs):
     B.append(("p", "At fixed L_x the coarsest chains have blocks longer than ell (n_e < 1, K_int < K_s: the paper's "
                    "other regime) and patterns of one-block pawls, so that family mixes the body's size with how "
                    "finely it is discretised. The last step of each of its series (a step of many standard errors says "
-                   "its finest chain is not yet the continuum limit): " + "; ".join(_last_step(doc, t) for t in trends if t["family"] == "fixed_length")
+                   "its finest chain is not yet the continuum limit): "
+                   + "; ".join(_last_step(doc, t) for t in trends if t["family"] == "fixed_length")
                    + "."))
     cost = []
     for s in scenes:

@@ -152,4 +152,5 @@ def check_size_scaling(md, data, repo, tables, fail):
         fail(f"size scaling: {len(coll)} collapse rows for {len(mine)} tests")
     for row, c in zip(coll, mine):
         if row[:3] != [c["surface"], c["quantity"], c["candidate"]] or row[5] != ("yes" if c["collapses"] else "no"):
-            fail(f"size scaling: collapse row {row} != {c['surface']} {c['quantity']} {c['candidate']} {c['collapses']}")
+            fail(f"size scaling: collapse row {row} != "
+                 f"{c['surface']} {c['quantity']} {c['candidate']} {c['collapses']}")
