@@ -49,13 +49,17 @@ set(SB_FIG_INPUTS_graded_friction "")
 set(SB_FIG_STUDIES_graded_friction graded_friction)
 set(SB_FIG_INPUTS_composite_stiffness "")
 set(SB_FIG_STUDIES_composite_stiffness composite_stiffness)
+set(SB_FIG_INPUTS_size_scaling "")
+set(SB_FIG_STUDIES_size_scaling size_scaling)
+# figure name -> other sources it imports besides figures/style.py (the fits the report shares).
+set(SB_FIG_SOURCES_size_scaling ${CMAKE_SOURCE_DIR}/paper/scaling_fits.py)
 # figure name -> optional studies it draws (make studies; read from the build tree if run there,
 # else from the committed paper/data/<study>.json, which is what the file dependency watches).
 set(SB_FIG_STUDIES_accuracy_cost rk4_refinement)
 set(SB_FIG_STUDIES_layout layout)
 set(SB_FIG_INPUTS_layout "")
 set(SB_FIGURES fig1 fig_s1 fig_s2 fig2 fig_p1 fig3 fig4 fig5 fig_p2 fig_p3 sensitivity accuracy_cost schematics layout
-               design_map slip_events graded_friction composite_stiffness)
+               design_map slip_events graded_friction composite_stiffness size_scaling)
 
 set(SB_FIG_PNGS "")
 set(SB_FIG_DATA_TARGETS "")
@@ -79,7 +83,7 @@ foreach(fig ${SB_FIGURES})
     OUTPUT ${png} ${SB_FIG_OUT}/${fig}.pdf
     COMMAND ${SB_PY} -m figures.${fig} --data ${SB_REPRO_DIR} --out ${SB_FIG_OUT}
             --springblock $<TARGET_FILE:springblock_pattern>
-    DEPENDS ${SB_FIG_SRC}/${fig}.py ${SB_FIG_COMMON} ${json_deps} springblock_pattern
+    DEPENDS ${SB_FIG_SRC}/${fig}.py ${SB_FIG_COMMON} ${SB_FIG_SOURCES_${fig}} ${json_deps} springblock_pattern
     COMMENT "Figure ${fig}"
     VERBATIM)
   list(APPEND SB_FIG_PNGS ${png})

@@ -1,5 +1,5 @@
-"""The report's studies of materials given block by block ('Beyond the paper'): graded micro
-friction and composite soft/hard chains. Every number is read from the study's document; each
+"""The report's studies beyond the paper: materials given block by block (graded micro friction,
+composite soft/hard chains) and the size-scaling study. Every number is read from the study's document; each
 study's question and criterion come first, as its driver wrote them before the runs."""
 import math
 from pathlib import Path
@@ -164,4 +164,116 @@ def composite_blocks(doc, path, figs):
     B.append(("p", f"{sum(c['resolved'] for c in measured)} of {len(measured)} differences are resolved: "
                    f"{resolved_list(measured, name)}. The largest standard error of a paired difference is "
                    f"{max(c['sem'] for c in measured):.4f}."))
+    return B
+
+
+def _fit_text(f, names, digits=4):
+    """A fit's parameters with their errors and its chi^2 verdict, or why there is none."""
+    if not f.get("converged"):
+        return "no fit (" + f.get("reason", "?") + ")"
+    pars = ", ".join(f"{n} = {v:.{digits}g} ± {e:.2g}" for n, v, e in zip(names, f["params"], f["errors"]))
+    return pars
+
+
+def _p_text(f):
+    if not f.get("converged"):
+        return "-"
+    return f"{f['chi2']:.1f}/{f['dof']}, p = {f['p']:.2g}"
+
+
+def _adequate(f):
+    return "-" if not f.get("converged") else "adequate" if f["adequate"] else "inadequate"
+
+
+def _last_step(doc, t):
+    """A series' change between its last two N, in combined standard errors."""
+    from paper import scaling_fits as sf
+
+    pts = sf.points(doc, t["surface"], t["family"], t["quantity"])
+    (xa, ya, sa), (xb, yb, sb) = pts[-2], pts[-1]
+    d = yb - ya
+    return (f"{t['surface']} {t['quantity']} {xa['N']} -> {xb['N']}: {d:+.4f} "
+            f"({d / math.hypot(sa, sb):+.1f} combined standard errors)")
+
+
+def size_scaling_blocks(doc, path, figs):
+    """The size-scaling study: question and criterion, scenes and cost, each family's trends, the
+    collapse test, the cost per repetition. Fits by paper/scaling_fits.py (the figure's too)."""
+    from paper import scaling_fits as sf
+
+    scenes = doc["scenes"]
+    runs = [r for s in scenes for r in s["result"].get("runs", [])]
+    patterns = {s["x"]["surface"]: s["x"]["pattern"] for s in scenes if s["x"]["N"] == 360}
+    reps_by_N = {}
+    for s in scenes:
+        reps_by_N.setdefault(s["x"]["N"], set()).add(s["result"]["reps"])
+    reps_text = ", ".join(f"{'/'.join(str(r) for r in sorted(v))} at {N}" for N, v in sorted(reps_by_N.items()))
+    first = scenes[0]["result"]["scene"]
+    B = [("p", f"**Question.** {doc['question']} **Criterion** (fixed before the runs, paper/choices.md 'Size "
+               f"scaling'). {doc['criterion']} A fit whose chi^2 is inadequate keeps its parameter errors as the "
+               "standard errors give them: they then understate the uncertainty."),
+         ("p", "The chain's elastic length ell = l_x sqrt(K_int/K_s) = l_z sqrt(E/G) sqrt((N-1)/N) is about "
+               f"{scenes[-1]['x']['elastic_length_cm']:.3f} cm whatever N and L_x, because K_int grows as N / L_x "
+               "and K_s "
+               "falls as L_x / N. At fixed L_x the chain's length in elastic lengths, Lambda = L_x / ell, is fixed and "
+               "the blocks per elastic length n_e = ell / l_x grow as N; at fixed l_x it is the other way round; N "
+               "itself counts the independent micro thresholds. The load per area and t0 are the same in every "
+               "scene. Blocks per groove are proportional to n_e in both families, so they stand or fall with it."),
+         ("p", f"Two families through the paper's chain (N = 360, 7.2 cm): fixed L_x = 7.2 cm (finer blocks) and "
+               f"fixed l_x = 0.02 cm (longer body); surfaces {', '.join(patterns.values())} as laid out on N = 360, "
+               "their physical pawl and groove sizes kept at fixed L_x (block counts scaled with N). "
+               f"N from {min(reps_by_N)} to {max(reps_by_N)}; whole runs (mu_s and mu_d) up to N = "
+               f"{doc['largest_whole_run']}, larger chains stopped at their first slip (mu_s only), the patterned "
+               f"surfaces at fixed L_x only up to N = {doc['largest_patterned_fixed_length']} (cost: reproduce/"
+               f"size_scaling.cpp). Repetitions: {reps_text}. **Integrator**: {integrator_text(first)}, "
+               f"{doc['duration_t0']:g} t0 per whole run; {cpu_seconds(doc):.0f} CPU s in all over {len(runs)} "
+               f"repetitions ({doc['wall_seconds']:.0f} s wall). " + provenance_text(doc, path)),
+         figure(figs, "size_scaling")]
+    trends = sf.trends(doc)
+    rows = []
+    for t in trends:
+        ll, pl = t["log_linear"], t["power_law"]
+        rows.append([t["surface"], t["family"], t["quantity"], f"{t['N_min']}-{t['N_max']}",
+                     f"{t['mu_first']:.4f} ± {t['sem_first']:.4f}", f"{t['mu_last']:.4f} ± {t['sem_last']:.4f}",
+                     (f"{ll['params'][1]:+.4f} ± {ll['errors'][1]:.4f}" if ll.get("converged") else "-"),
+                     _p_text(ll), _adequate(ll), _fit_text(pl, ("a", "b", "c"), 3), _p_text(pl), _adequate(pl)])
+    B.append(("p", "Each family's trend against N: the change per decade of N (log-linear fit) and the fit "
+                   "mu = a + b N^-c, each with chi^2/dof and its p-value."))
+    B.append(("table", ["surface", "family", "quantity", "N", "mu at smallest N", "mu at largest N",
+                        "change per decade", "chi^2/dof (log)", "log fit", "a + b N^-c", "chi^2/dof (power)",
+                        "power fit"], rows))
+    coll = sf.collapses(doc)
+    B.append(("p", "The collapse test: one curve mu = a + b X^-c through both families' points of a surface."))
+    B.append(("table", ["surface", "quantity", "candidate X", "points", "chi^2/dof", "collapse"],
+              [[c["surface"], c["quantity"], c["candidate"], str(c["points"]), _p_text(c["fit"]),
+                "yes" if c["collapses"] else "no"] for c in coll]))
+    hits = [c for c in coll if c["collapses"]]
+    if hits:
+        found = "; ".join(f"{c['surface']} {c['quantity']} on {c['candidate']} (p = {c['fit']['p']:.2g})" for c in hits)
+        B.append(("p", f"{len(hits)} of {len(coll)} (surface, quantity, candidate) tests collapse: {found}. "
+                       "Every other combination fails the criterion."))
+    else:
+        B.append(("p", f"None of the {len(coll)} (surface, quantity, candidate) tests collapses: no candidate puts "
+                       "the two families of any surface on one curve by the criterion."))
+    flat = [t for t in trends if t["log_linear"].get("converged") and t["log_linear"]["adequate"]
+            and abs(t["log_linear"]["params"][1]) < 3 * t["log_linear"]["errors"][1]]
+    B.append(("p", "Series with no resolved trend (an adequate log-linear fit whose change per decade is within 3 "
+                   "of its standard errors of zero): " + ("; ".join(f"{t['surface']} {t['family']} {t['quantity']}"
+                                                               for t in flat) or "none") + "."))
+    B.append(("p", "At fixed L_x the coarsest chains have blocks longer than ell (n_e < 1, K_int < K_s: the paper's "
+                   "other regime) and patterns of one-block pawls, so that family mixes the body's size with how "
+                   "finely it is discretised. The last step of each of its series (a step of many standard errors says "
+                   "its finest chain is not yet the continuum limit): "
+                   + "; ".join(_last_step(doc, t) for t in trends if t["family"] == "fixed_length")
+                   + "."))
+    cost = []
+    for s in scenes:
+        r = s["result"].get("runs", [])
+        if r and s["x"]["N"] >= 3600:
+            cost.append([s["x"]["surface"], s["x"]["family"], str(s["x"]["N"]), str(len(r)),
+                         "whole" if s["x"]["whole_run"] else "first slip",
+                         f"{sum(x['cpu_s'] for x in r) / len(r):.2f}"])
+    if cost:
+        B.append(("p", "Cost per repetition of the large chains (CPU s, mean over the scene's repetitions):"))
+        B.append(("table", ["surface", "family", "N", "repetitions", "run", "CPU s per repetition"], cost))
     return B

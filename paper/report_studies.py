@@ -12,9 +12,9 @@ from tools.reproduction.inputs import published_rows
 REPO = Path(__file__).resolve().parent.parent
 
 STUDIES = ("layout", "extraction", "method_bias", "rk4_refinement", "slip_events", "graded_friction",
-           "composite_stiffness")
+           "composite_stiffness", "size_scaling")
 # The studies that go beyond the paper (their own section of the report), in STUDIES' order.
-BEYOND = ("slip_events", "graded_friction", "composite_stiffness")
+BEYOND = ("slip_events", "graded_friction", "composite_stiffness", "size_scaling")
 
 
 def load_study(data, name):
@@ -234,7 +234,8 @@ def study_blocks(data, figs):
               "rk4_refinement": "RK4 below the paper's step",
               "slip_events": "Slip events and their sizes",
               "graded_friction": "Graded micro friction along the chain",
-              "composite_stiffness": "Composite chains: alternating soft and hard segments"}
+              "composite_stiffness": "Composite chains: alternating soft and hard segments",
+              "size_scaling": "Size scaling: N at fixed length and at fixed block size"}
     for name in STUDIES:
         if name in BEYOND:
             continue
@@ -264,6 +265,8 @@ def one_study(data, figs, name, title):
         B += report_beyond.graded_blocks(doc, path, figs)
     elif name == "composite_stiffness":
         B += report_beyond.composite_blocks(doc, path, figs)
+    elif name == "size_scaling":
+        B += report_beyond.size_scaling_blocks(doc, path, figs)
     else:
         B.append(("p", "Drawn with accuracy_cost's settings in the accuracy figure above. " + provenance_text(doc, path)))
     return B

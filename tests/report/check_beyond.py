@@ -86,3 +86,71 @@ def check_composite(md, data, repo, tables, fail):
         if not (same(diff, c["diff"]) and same(sem, c["sem"])
                 and row[cell + 1] == ("resolved" if c["resolved"] else "not resolved")):
             fail(f"composite: row {row} != {c}")
+
+
+def weighted_slope(N, y, sem):
+    """The log-linear fit's change per decade and its standard error, by the normal equations
+    (independent of paper/scaling_fits.py's curve_fit)."""
+    u = [math.log10(n) for n in N]
+    w = [1 / s ** 2 for s in sem]
+    sw = sum(w)
+    ub = sum(wi * ui for wi, ui in zip(w, u)) / sw
+    yb = sum(wi * yi for wi, yi in zip(w, y)) / sw
+    suu = sum(wi * (ui - ub) ** 2 for wi, ui in zip(w, u))
+    b = sum(wi * (ui - ub) * (yi - yb) for wi, ui, yi in zip(w, u, y)) / suu
+    return b, 1 / math.sqrt(suu)
+
+
+def check_size_scaling(md, data, repo, tables, fail):
+    """The trends table against slopes recomputed from the scenes; the collapse table against
+    paper/scaling_fits.py; the driver's rules (whole runs only up to largest_whole_run, mu_d not
+    measured beyond, repetitions as recorded) on the document."""
+    from paper import scaling_fits as sf
+
+    doc = load(data, repo, "size_scaling")
+    all_tables = tables(md)
+    trend = next((b for h, b in all_tables if h[:4] == ["surface", "family", "quantity", "N"]), None)
+    coll = next((b for h, b in all_tables if h[:3] == ["surface", "quantity", "candidate X"]), None)
+    if (doc is None) != (trend is None) or (doc is None) != (coll is None):
+        fail(f"size scaling: document {doc is not None}, tables {trend is not None} {coll is not None}")
+    if doc is None or trend is None or coll is None:
+        return
+    for s in doc["scenes"]:
+        x, r = s["x"], s["result"]
+        whole = x["N"] <= doc["largest_whole_run"]
+        if x["whole_run"] != whole or r["scene"].get("stop_after_mu_s", False) == whole:
+            fail(f"size scaling: {s['id']} whole_run {x['whole_run']} for N {x['N']}")
+        if not whole and (r.get("mu_d") or {}).get("n", 0) != 0:
+            fail(f"size scaling: {s['id']} stopped at its first slip but has mu_d")
+        if len(r.get("runs", [])) != r["reps"]:
+            fail(f"size scaling: {s['id']} {len(r.get('runs', []))} runs for {r['reps']} repetitions")
+    rows = {(r[0], r[1], r[2]): r for r in trend}
+    expected = 0
+    for surface in sf.surfaces(doc):
+        for family in sf.FAMILIES:
+            for key in sf.QUANTITIES:
+                pts = sf.points(doc, surface, family, key)
+                if not pts:
+                    continue
+                expected += 1
+                row = rows.get((surface, family, key))
+                if row is None:
+                    fail(f"size scaling: no trend row for {surface} {family} {key}")
+                    continue
+                if row[3] != f"{pts[0][0]['N']}-{pts[-1][0]['N']}":
+                    fail(f"size scaling: {row[:4]} N range != {pts[0][0]['N']}-{pts[-1][0]['N']}")
+                if len(pts) < 3:
+                    continue
+                b, se = weighted_slope([p[0]["N"] for p in pts], [p[1] for p in pts], [p[2] for p in pts])
+                printed_b, printed_se = row[6].split(" ± ")
+                if not (same(printed_b, b) and same(printed_se, se)):
+                    fail(f"size scaling: {row[:3]} change per decade {row[6]} != recomputed {b} ± {se}")
+    if len(trend) != expected:
+        fail(f"size scaling: {len(trend)} trend rows for {expected} series")
+    mine = sf.collapses(doc)
+    if len(coll) != len(mine):
+        fail(f"size scaling: {len(coll)} collapse rows for {len(mine)} tests")
+    for row, c in zip(coll, mine):
+        if row[:3] != [c["surface"], c["quantity"], c["candidate"]] or row[5] != ("yes" if c["collapses"] else "no"):
+            fail(f"size scaling: collapse row {row} != "
+                 f"{c['surface']} {c['quantity']} {c['candidate']} {c['collapses']}")

@@ -7,9 +7,9 @@ Asserted: the counts printed in the Summary equal summary.json's; every publishe
 n, d, z, k, both thresholds, Delta) equal the summary's to the printed precision; every claim
 appears, and wherever it appears its verdict and its comparison lines equal the summary's; the
 claims overview, the tier-resolution table and the z-score numbers equal the summary's; no
-placeholder ('?', None, nan, unchecked) appears anywhere; the slip-event, graded and composite
-studies' tables are their documents' (check_beyond.py); the default reading of mu_s is the one the
-extraction study's criterion adopts, and reads the tables' mu_s.
+placeholder ('?', None, nan, unchecked) appears anywhere; the slip-event, graded, composite and
+size-scaling studies' tables are their documents' (check_beyond.py); the default reading of mu_s is
+the one the extraction study's criterion adopts, and reads the tables' mu_s.
 
 Usage: PYTHONPATH=<repository root> test_report.py --data DIR (DIR/summary.json and the target documents; CTest: the
 configured tier's build/reproduce)."""
@@ -320,7 +320,8 @@ def main():
     check_target_cost(md, a.data)
     check_slip_events(md, a.data)
     check_reading(md, s, a.data)
-    for materials_study in (check_beyond.check_graded, check_beyond.check_composite):
+    for materials_study in (check_beyond.check_graded, check_beyond.check_composite,
+                            check_beyond.check_size_scaling):
         materials_study(md, a.data, REPO, tables, lambda message: check(False, message))
     for f in FAILURES:
         print("FAIL:", f)
