@@ -102,6 +102,7 @@ TEST(EnsembleState, ReadsBackNumberForNumber) {
   s.run.method = sb::Method::Event;
   s.observe.series = true;
   sb::set_scene_field(s, "duration", "2t0");
+  sb::set_scene_field(s, "sample_dt", "0.1ms");  // a series of a few thousand samples is enough to read back
   const auto e = sb::run_ensemble(s);
   const auto state = sb::ensemble_state(e);
   const auto back = sb::ensemble_from_state(nlohmann::json::parse(state.dump()));

@@ -35,6 +35,7 @@ Scene scene(const std::string& pattern, const std::string& duration, int reps = 
   set_scene_field(s, "pattern", pattern);
   set_scene_field(s, "duration", duration);
   set_scene_field(s, "slip_events", "true");
+  set_scene_field(s, "sample_dt", "1e-2ms");  // events come from the switches; samples only cost
   s.reps = reps;
   s.seed = 11;
   s.threads = 1;
