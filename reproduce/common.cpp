@@ -61,8 +61,9 @@ nlohmann::json scene_record(const LabelledScene& ls, const sb::EnsembleResult& r
   nlohmann::json result = sb::ensemble_json(ls.scene, r, cmd);
   result.erase("provenance");  // the document carries one provenance block
   if (!ls.keep_runs) result.erase("runs");
+  if (!ls.keep_scene_echo) result.erase("scene");
   nlohmann::json rec = {{"id", ls.id}, {"label", ls.label}, {"x", ls.x}, {"result", result}};
-  if (ls.scene.pattern.kind != sb::SurfaceKind::Random) rec["contact_mask"] = mask_text(ls.scene);
+  if (ls.keep_scene_echo && ls.scene.pattern.kind != sb::SurfaceKind::Random) rec["contact_mask"] = mask_text(ls.scene);
   if (r.runs.empty()) return rec;
   const auto& run0 = r.runs[0];
   if (!run0.series.empty()) {

@@ -62,6 +62,10 @@ struct LabelledScene {
   // The per-repetition records in the document (result.runs). A study that only needs each
   // scene's statistics drops them to keep its committed document small.
   bool keep_runs = true;
+  // The scene's full echo (result.scene) and contact mask. A study of many variants of scenes
+  // whose every field but those in x is the default drops them; x and the document's header
+  // then record its parameters.
+  bool keep_scene_echo = true;
   // Borrowed scenes are not simulated here: their result is another target's record (given with
   // --input) of the same simulation, found with find_borrowable(). With trace set, repetition 0
   // is simulated once more with the source's seed to keep its mu(t) series, and must give the
