@@ -18,7 +18,7 @@ baseline; the report quotes them next to the z values.
 Cost: the rule and run-length variants of a surface see one trajectory, so sb::run_ensembles
 simulates it once (to 6 t0) and reads every variant off it (trajectory_from in the JSON); the
 numbers are bit-identical to separate runs (tests/unit/test_shared_trajectory.cpp). Only the
-accuracy and sample-spacing variants are simulations of their own. Paper tier: 77 s before, 26 s with sharing.
+accuracy and sample-spacing variants are simulations of their own.
 */
 #include <fmt/format.h>
 

@@ -164,14 +164,18 @@ bool FrictionObserver::falls(double mu, double running_max) const {
              : mu < running_max - cfg_.peak_drop;
 }
 
-bool FrictionObserver::dynamic_begins(const Chain& c, const State& s) const {
-  if (cfg_.peak_rule == ExtractionRules::PeakRule::Drop) return true;
+namespace {
+bool every_contact_block_slid(const Chain& c, const State& s) {
   return !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact;
+}
+}  // namespace
+
+bool FrictionObserver::dynamic_begins(const Chain& c, const State& s) const {
+  return cfg_.peak_rule == ExtractionRules::PeakRule::Drop || every_contact_block_slid(c, s);
 }
 
 bool FrictionObserver::ends_at_next_sample(const Chain& c, const State& s) const {
-  if (tests_all_slid() && !s.slipped_once.empty() && s.n_slipped_once >= c.n_contact) return true;
-  return large_event_;
+  return (tests_all_slid() && every_contact_block_slid(c, s)) || large_event_;
 }
 
 long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, double dt, long n,
