@@ -207,6 +207,25 @@ def vs_paper_table(path):
               f"x{r['ratio']:.2f}")
 
 
+# A chain whose blocks differ may cost at most this many times the uniform chain with the same
+# motion (the general path's overhead: bm_doubled_by_fields against bm_doubled_by_parameters).
+GOAL_GENERAL_PATH = 1.5
+
+
+def materials_table(path):
+    """Chains whose blocks differ against the uniform chain (bench_materials.cpp): CPU medians."""
+    runs = medians(path)
+    cpu = {name: c["cpu_time"] for name, c in runs.items()}
+    print("\nChains whose blocks differ, event method, periodic:10,10 N = 360, 0.3 s (CPU, median)")
+    for name, base in (("bm_doubled_by_fields", "bm_doubled_by_parameters"), ("bm_graded_friction", "bm_uniform"),
+                       ("bm_composite", "bm_uniform")):
+        if name in cpu and base in cpu:
+            ratio = cpu[name] / cpu[base]
+            goal = (f"  goal x{GOAL_GENERAL_PATH}: {'met' if ratio <= GOAL_GENERAL_PATH else 'not met'}"
+                    if name == "bm_doubled_by_fields" else "")
+            print(f"  {name:26s} {cpu[name]:8.2f} ms against {base:26s} {cpu[base]:8.2f} ms: x{ratio:.2f}{goal}")
+
+
 if __name__ == "__main__":
     kernel_table(sys.argv[1])
     if len(sys.argv) > 2:
@@ -217,3 +236,5 @@ if __name__ == "__main__":
         reproduction_table(sys.argv[4])
     if len(sys.argv) > 5:
         vs_paper_table(sys.argv[5])
+    if len(sys.argv) > 6:
+        materials_table(sys.argv[6])

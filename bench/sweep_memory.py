@@ -10,12 +10,18 @@ unit (the unit's scene, its checkpoint offset, its place in the queue), not its 
 
 Usage: python3 -m bench.sweep_memory --springblock BIN [--units 100000 1000000] [--threads 2]
                                      [--dir DIR]   (DIR gets the files; default: a temporary one)
+                                     [--out JSON]  (the rows and where they were measured, for
+                                                    python3 -m tools.sweep_cost)
 """
 import argparse
+import json
 import os
 import subprocess
 import tempfile
 import time
+
+from tools.generated_block import write_atomic
+from tools.machine import load_average, machine
 
 REPS = 1000
 
@@ -45,7 +51,9 @@ def main():
     ap.add_argument("--units", type=int, nargs="+", default=[100000, 1000000])
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--dir")
+    ap.add_argument("--out")
     a = ap.parse_args()
+    doc = {"machine": machine(), "load_start": load_average(), "threads": a.threads, "rows": []}
     with tempfile.TemporaryDirectory() as tmp:
         d = a.dir or tmp
         print(f"{'units':>9}  {'peak RSS':>9}  {'wall':>8}  {'growth per added unit':>22}")
@@ -56,12 +64,16 @@ def main():
             mb, wall = peak(a.springblock, toml, out, a.threads)
             growth = f"{(mb - last[1]) * 1048576 / (n - last[0]):.1f} B" if last else ""
             print(f"{n:>9}  {mb:>6.1f} MB  {wall:>6.1f} s  {growth:>22}", flush=True)
+            doc["rows"].append({"units": n, "peak_rss_mb": mb, "wall_s": wall})
             last = (n, mb)
             first = first or last
             for f in (toml, out):
                 os.remove(f)
         if len(a.units) > 1:
             print(f"growth from {first[0]} to {last[0]} units: {last[1] - first[1]:.1f} MB (goal: < 50 MB)")
+    doc["load_end"] = load_average()
+    if a.out:
+        write_atomic(a.out, json.dumps(doc, indent=1) + "\n")
 
 
 if __name__ == "__main__":
