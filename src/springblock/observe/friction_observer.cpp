@@ -19,6 +19,20 @@ SB_KERNEL_CLONES void stuck_forces(const ForceCoefficients& k, int lo, int hi, d
                                    const double* __restrict u, double* __restrict f) {
   for (int i = lo; i < hi; ++i) f[i] = force_interior<true, false>(k, i, slider, u, nullptr, 0.0);
 }
+// The same on a chain whose blocks differ, each block's own springs, with the additions of
+// Chain::driving_force (force_checked: slider spring, damping, left spring, right spring) so
+// that a stuck block's force has the same doubles whichever of the two computes it; without
+// its branches the loop vectorises.
+SB_KERNEL_CLONES void stuck_forces(const BlockForceCoefficients& k, int lo, int hi, double slider,
+                                   const double* __restrict u, const double* __restrict v, double* __restrict f) {
+  for (int i = lo; i < hi; ++i) {
+    double F = k.K_s[i] * (slider - u[i]) - 0.0;
+    F -= k.m_gamma[i] * v[i];
+    F += k.K_int[i - 1] * (u[i - 1] - u[i]);
+    F += k.K_int[i] * (u[i + 1] - u[i]);
+    f[i] = F;
+  }
+}
 
 // The friction force of every block summed over the chain, |F| and F: a sliding block's kinetic
 // force dir f_kinetic in place of its entry of f, a groove's entry 0 (f holds 0 there, and so does
@@ -92,15 +106,11 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
   int n_sliding = 0;
   const bool per_block = !c.blocks.uniform();  // each block's own springs: Chain::driving_force
   for (const auto& [lo, hi] : contact_runs_) {
-    if (per_block) {
-      for (int i = lo; i < hi; ++i) {
-        if (dir[i] == 0) f[i] = c.driving_force(i, u, s.v.data(), s.t);  // a sliding block's entry is not read
-        n_sliding += dir[i] != 0;
-      }
-      continue;
-    }
     const int first = std::max(lo, 1), last = std::min(hi, c.N - 1);
-    if (first < last) stuck_forces(k, first, last, c.v_slider * s.t, u, f);
+    if (first < last && per_block)
+      stuck_forces(c.block_force_coefficients(), first, last, c.v_slider * s.t, u, s.v.data(), f);
+    else if (first < last)
+      stuck_forces(k, first, last, c.v_slider * s.t, u, f);
     // A chain end's force by the checked form; a one-block run at an end is taken once.
     if (lo == 0 || lo == c.N - 1) f[lo] = c.driving_force(lo, u, s.v.data(), s.t);
     if (hi - 1 != lo && hi == c.N) f[hi - 1] = c.driving_force(hi - 1, u, s.v.data(), s.t);

@@ -198,7 +198,7 @@ void RunShapes::set_sample_dt(double dt) {
   sample_dt_ = dt;
   for (auto& [key, sh] : shapes_)
     if (sh.steps.parts & RunShape::kSample) set_sample_transitions(sh);
-  for (auto& [key, sh] : ranged_)
+  for (auto& [key, sh] : by_content_)
     if (sh.steps.parts & RunShape::kSample) set_sample_transitions(sh);
 }
 

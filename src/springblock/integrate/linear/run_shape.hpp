@@ -133,13 +133,14 @@ class RunShapes {
   double sample_dt() const { return sample_dt_; }
   double step() const { return step_; }
   double march_step() const { return march_step_; }
-  int size() const { return static_cast<int>(shapes_.size() + ranged_.size()); }
+  int size() const { return static_cast<int>(shapes_.size() + by_content_.size()); }
   // The exact stepper's step for chain c: 0.75 rad of the fastest rate any run's mode can have.
   static double step_for(const Chain& c);
 
  private:
   RunShape make(int n, bool left, bool right) const;
   RunShape make_general(BlockRange r) const;
+  std::vector<double> general_key(BlockRange r) const;
   static void finish_modes(RunShape& sh, double mass, double gamma);
   void add_parts(RunShape& sh, std::uint8_t parts) const;
   void set_sample_transitions(RunShape& sh) const;
@@ -147,7 +148,10 @@ class RunShapes {
   double step_, march_step_, sample_dt_ = 0;
   std::map<std::tuple<int, bool, bool>, RunShape> shapes_;
   std::vector<RunShape*> index_;  // shapes_ by 4 n + 2 left + right: every projection looks one up
-  std::map<std::pair<int, int>, RunShape> ranged_;  // a chain whose blocks differ: by (lo, hi)
+  // A chain whose blocks differ: each run (lo, hi) points at the shape of its blocks' values, one
+  // for all runs whose blocks are equal (general_key), so their transitions are made once.
+  std::map<std::pair<int, int>, RunShape*> ranged_;
+  std::map<std::vector<double>, RunShape> by_content_;
 };
 
 }  // namespace sb::event_detail

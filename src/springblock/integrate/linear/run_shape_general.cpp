@@ -9,10 +9,28 @@ namespace sb::event_detail {
 
 const RunShape& RunShapes::general(BlockRange r, std::uint8_t parts) {
   auto it = ranged_.find({r.lo, r.hi});
-  if (it == ranged_.end()) it = ranged_.emplace(std::make_pair(r.lo, r.hi), make_general(r)).first;
-  RunShape& sh = it->second;
+  if (it == ranged_.end()) {
+    auto shape = by_content_.find(general_key(r));
+    if (shape == by_content_.end()) shape = by_content_.emplace(general_key(r), make_general(r)).first;
+    it = ranged_.emplace(std::make_pair(r.lo, r.hi), &shape->second).first;
+  }
+  RunShape& sh = *it->second;
   if ((sh.steps.parts & parts) != parts) add_parts(sh, parts);
   return sh;
+}
+
+// Every value make_general reads, so that runs with equal keys have equal shapes to the last bit
+// (the chain's v, gamma and m are common to all): each block's slider spring and mass, the springs
+// inside the run, and the holding spring at each end (-1 at a free chain end, never a spring).
+std::vector<double> RunShapes::general_key(BlockRange r) const {
+  const Chain& c = c_;
+  std::vector<double> key;
+  key.reserve(3 * static_cast<std::size_t>(r.size()) + 1);
+  for (int i = r.lo; i < r.hi; ++i) key.push_back(c.k_s(i)), key.push_back(c.mass(i));
+  for (int i = r.lo; i + 1 < r.hi; ++i) key.push_back(c.spring(i));
+  key.push_back(r.lo > 0 ? c.spring(r.lo - 1) : -1.0);
+  key.push_back(r.hi < c.N ? c.spring(r.hi - 1) : -1.0);
+  return key;
 }
 
 // K: each block's slider spring plus the springs to the neighbours that exist (inside the run,
