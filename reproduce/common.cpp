@@ -424,13 +424,23 @@ std::string output_path(const Options& opt) { return opt.out + "/" + opt.target 
 
 using Clock = std::chrono::steady_clock;
 
+// What a target runs, once its input is read: under mpirun on rank 0, with the other ranks.
+struct Prepared {
+  std::optional<Context> ctx;
+  std::vector<LabelledScene> scenes;
+  Pool pool;
+  std::unique_ptr<sb::parallel::Scheduler> ranks;  // under mpirun only; ends MPI when it goes
+};
+
 // Runs the pool with progress and ETA, on this process's threads or, under mpirun, dealt to the
-// ranks (`ranks`, on rank 0), then writes the document; nothing when interrupted.
-int simulate_and_write(const Context& ctx, const std::vector<LabelledScene>& scenes, const FinishFn& finish,
-                       Clock::time_point wall0, sb::parallel::Scheduler* ranks) {
+// ranks, then writes the document; nothing when interrupted.
+int simulate_and_write(const Prepared& prepared, const FinishFn& finish, Clock::time_point wall0) {
+  const Context& ctx = *prepared.ctx;
+  const auto& scenes = prepared.scenes;
+  const Pool& pool = prepared.pool;
+  sb::parallel::Scheduler* ranks = prepared.ranks.get();
   const std::string& target = ctx.opt.target;
   const auto* interrupt = shell::catch_interrupts();
-  const Pool pool = make_pool(ctx, scenes);
   auto progress = [&](double f, double elapsed) {
     const std::string eta = f > 0.01 ? shell::format_seconds(shell::eta_seconds(f, elapsed)) : "?";
     shell::show_progress(fmt::format("[{}] {} scenes, {:5.1f}% elapsed {} ETA {}", target, pool.scenes.size(), 100 * f,
@@ -459,22 +469,24 @@ int simulate_and_write(const Context& ctx, const std::vector<LabelledScene>& sce
 }
 
 // Setup reads tables and other targets' documents: any failure there is the input's (exit 2).
-// Under mpirun, rank 0 alone plans and claims the output, and tells the other ranks whether to go on.
-int set_up(const TargetCommandLine& cl, const PlanFn& plan, std::optional<Context>& ctx,
-           std::vector<LabelledScene>& scenes, std::unique_ptr<sb::parallel::Scheduler>& ranks) {
+// Under mpirun, rank 0 alone plans, claims the output and makes the pool, and then tells the
+// other ranks whether to go on: nothing that can fail on rank 0 comes between that and the run,
+// where they wait for it.
+int set_up(const TargetCommandLine& cl, const PlanFn& plan, Prepared& p) {
   return shell::guarded(cl.opt.target, [&] {
-    ctx.emplace(make_context(cl));
-    ranks = target_ranks(ctx->opt.threads);
+    p.ctx.emplace(make_context(cl));
+    p.ranks = target_ranks(p.ctx->opt.threads);
     std::exception_ptr refused;
     try {
-      scenes = planned_scenes(*ctx, plan);
+      p.scenes = planned_scenes(*p.ctx, plan);
       // The output is claimed now, not after the run: a bad --out fails before any simulation.
-      shell::make_output_directory(ctx->opt.out, "out");
-      shell::claim_output(output_path(ctx->opt), "out");
+      shell::make_output_directory(p.ctx->opt.out, "out");
+      shell::claim_output(output_path(p.ctx->opt), "out");
+      p.pool = make_pool(*p.ctx, p.scenes);
     } catch (...) {
       refused = std::current_exception();
     }
-    if (ranks) ranks->agree(!refused);
+    if (p.ranks) p.ranks->agree(!refused);
     if (refused) std::rethrow_exception(refused);
     return int{shell::kOk};
   }, {"cannot set up", shell::kBadInput});
@@ -503,12 +515,10 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
   }
 
   const auto wall0 = Clock::now();
-  std::optional<Context> ctx;
-  std::vector<LabelledScene> scenes;
-  std::unique_ptr<sb::parallel::Scheduler> ranks;  // under mpirun only; ends MPI when it goes
-  const int setup = set_up(cl, plan, ctx, scenes, ranks);
+  Prepared prepared;
+  const int setup = set_up(cl, plan, prepared);
   if (setup != shell::kOk) return setup;
-  return shell::guarded(target, [&] { return simulate_and_write(*ctx, scenes, finish, wall0, ranks.get()); });
+  return shell::guarded(target, [&] { return simulate_and_write(prepared, finish, wall0); });
 }
 
 }  // namespace repro
