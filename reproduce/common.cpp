@@ -6,8 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -19,6 +21,7 @@
 #include "shell/interrupt.hpp"
 #include "shell/output.hpp"
 #include "shell/progress.hpp"
+#include "ranks.hpp"
 #include "springblock/ensemble.hpp"
 #include "springblock/io.hpp"
 #include "springblock/scene_fields.hpp"
@@ -421,26 +424,41 @@ std::string output_path(const Options& opt) { return opt.out + "/" + opt.target 
 
 using Clock = std::chrono::steady_clock;
 
-// Runs the pool with progress and ETA, then writes the document; nothing when interrupted.
-int simulate_and_write(const Context& ctx, const std::vector<LabelledScene>& scenes, const FinishFn& finish,
-                       Clock::time_point wall0) {
+// What a target runs, once its input is read: under mpirun on rank 0, with the other ranks.
+struct Prepared {
+  std::optional<Context> ctx;
+  std::vector<LabelledScene> scenes;
+  Pool pool;
+  std::unique_ptr<sb::parallel::Scheduler> ranks;  // under mpirun only; ends MPI when it goes
+};
+
+// Runs the pool with progress and ETA, on this process's threads or, under mpirun, dealt to the
+// ranks, then writes the document; nothing when interrupted.
+int simulate_and_write(const Prepared& prepared, const FinishFn& finish, Clock::time_point wall0) {
+  const Context& ctx = *prepared.ctx;
+  const auto& scenes = prepared.scenes;
+  const Pool& pool = prepared.pool;
+  sb::parallel::Scheduler* ranks = prepared.ranks.get();
   const std::string& target = ctx.opt.target;
   const auto* interrupt = shell::catch_interrupts();
-  const Pool pool = make_pool(ctx, scenes);
   auto progress = [&](double f, double elapsed) {
     const std::string eta = f > 0.01 ? shell::format_seconds(shell::eta_seconds(f, elapsed)) : "?";
     shell::show_progress(fmt::format("[{}] {} scenes, {:5.1f}% elapsed {} ETA {}", target, pool.scenes.size(), 100 * f,
                                      shell::format_seconds(elapsed), eta));
   };
   progress(0, 0);
-  const auto results = sb::run_ensembles(pool.scenes, interrupt, progress, pool.weights);
+  const auto results = run_scenes(ranks, pool.scenes, interrupt, progress, pool.weights);
   shell::end_progress_line();
   for (const auto& r : results)
     if (r.interrupted) {
       std::fprintf(stderr, "%s: interrupted; nothing written, existing output untouched\n", target.c_str());
+      std::fflush(stderr);
+      if (ranks) ranks->abort(shell::kInterrupted);  // the other ranks stop too
       return shell::kInterrupted;
     }
   nlohmann::json doc = target_document(ctx, scene_records(ctx, scenes, pool, results));
+  // How many processes ran it; the numbers are the same whatever the count.
+  doc["provenance"]["ranks"] = ranks ? ranks->ranks() : 1;
   if (finish) finish(ctx, doc);
   doc["wall_seconds"] = std::chrono::duration<double>(Clock::now() - wall0).count();
   const std::string path = output_path(ctx.opt);
@@ -450,18 +468,28 @@ int simulate_and_write(const Context& ctx, const std::vector<LabelledScene>& sce
   return shell::kOk;
 }
 
-}  // namespace
-
-namespace {
-
-// The targets deal their repetitions to one process's threads, not to MPI ranks: started by
-// mpirun -np N, each of the N copies would run the whole target and write the same file.
-void refuse_several_ranks() {
-  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-    if (const char* n = std::getenv(v); n && std::atoi(n) > 1)
-      throw sb::InputError("mpirun", std::string(v) + " = " + n + ": the reproduction targets run on the threads "
-                                     "of one process (--threads); under mpirun every rank would run the whole "
-                                     "target and write the same file. Run it without mpirun");
+// Setup reads tables and other targets' documents: any failure there is the input's (exit 2).
+// Under mpirun, rank 0 alone plans, claims the output and makes the pool, and then tells the
+// other ranks whether to go on: nothing that can fail on rank 0 comes between that and the run,
+// where they wait for it.
+int set_up(const TargetCommandLine& cl, const PlanFn& plan, Prepared& p) {
+  return shell::guarded(cl.opt.target, [&] {
+    p.ctx.emplace(make_context(cl));
+    p.ranks = target_ranks(p.ctx->opt.threads);
+    std::exception_ptr refused;
+    try {
+      p.scenes = planned_scenes(*p.ctx, plan);
+      // The output is claimed now, not after the run: a bad --out fails before any simulation.
+      shell::make_output_directory(p.ctx->opt.out, "out");
+      shell::claim_output(output_path(p.ctx->opt), "out");
+      p.pool = make_pool(*p.ctx, p.scenes);
+    } catch (...) {
+      refused = std::current_exception();
+    }
+    if (p.ranks) p.ranks->agree(!refused);
+    if (refused) std::rethrow_exception(refused);
+    return int{shell::kOk};
+  }, {"cannot set up", shell::kBadInput});
 }
 
 }  // namespace
@@ -472,24 +500,25 @@ int run_target(int argc, char** argv, const std::string& target, const std::stri
   cl.opt.target = target;
   cl.opt.command_line = shell::command_line(argc, argv);
   add_target_options(cl);
-  if (auto done = shell::parse(cl.app, argc, argv, target, "Run '" + std::string(argv[0]) + " --help' for the options."))
+  const bool speaks = speaking_rank();  // under mpirun, the other ranks read the same options quietly
+  if (auto done = shell::parse(cl.app, argc, argv, target, "Run '" + std::string(argv[0]) + " --help' for the options.",
+                               !speaks))
     return *done;
+  if (!speaks) {
+    int threads = 0;
+    try {
+      threads = make_context(cl).opt.threads;
+    } catch (const std::exception&) {
+      return shell::kBadInput;  // rank 0 finds the same and says why
+    }
+    return run_worker_rank(threads);
+  }
 
   const auto wall0 = Clock::now();
-  std::optional<Context> ctx;
-  std::vector<LabelledScene> scenes;
-  // Setup reads tables and other targets' documents: any failure there is the input's (exit 2).
-  const int setup = shell::guarded(target, [&] {
-    refuse_several_ranks();
-    ctx.emplace(make_context(cl));
-    scenes = planned_scenes(*ctx, plan);
-    // The output is claimed now, not after the run: a bad --out fails before any simulation.
-    shell::make_output_directory(ctx->opt.out, "out");
-    shell::claim_output(output_path(ctx->opt), "out");
-    return int{shell::kOk};
-  }, {"cannot set up", shell::kBadInput});
+  Prepared prepared;
+  const int setup = set_up(cl, plan, prepared);
   if (setup != shell::kOk) return setup;
-  return shell::guarded(target, [&] { return simulate_and_write(*ctx, scenes, finish, wall0); });
+  return shell::guarded(target, [&] { return simulate_and_write(prepared, finish, wall0); });
 }
 
 }  // namespace repro

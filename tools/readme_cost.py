@@ -70,7 +70,8 @@ def run_lines(runs):
     fresh = fresh_build(run)
     dates = sorted({r["date"] for r in runs})
     where = (f"tier `{run['tier']}`, {run['cores']} cores, commit {run['commit']}"
-             f"{' with local changes' if run['dirty'] else ''}, {', '.join(dates)}")
+             f"{' with local changes' if run['dirty'] else ''}, {', '.join(dates)}"
+             f"{', targets under `' + run['mpirun'] + '`' if run.get('mpirun') else ''}")
     out = [f"`make reproduce-all` ({where}; `build/reproduce/last_run.json`):", ""]
     total = run["total_s"]
     state = (f"from a fresh clone ({run['compiled_units']} translation units compiled)" if fresh

@@ -8,12 +8,16 @@ one progress line with an ETA over the whole job. Everything the tools print goe
 
 The ETA weights the targets by their wall time in the previous run of the same tier
 (<build>/reproduce/timings.json) and follows each target's own progress (its "NN.N%" lines).
-Usage: python3 -m tools.reproduce_all BUILD_DIR [--jobs N] [--studies]
+With --mpirun "mpirun -np 4" each reproduction target is started by that launcher: its rank 0 deals
+the target's repetitions to every rank and alone writes its document, which holds the numbers of a
+run in one process (its provenance records the rank count).
+Usage: python3 -m tools.reproduce_all BUILD_DIR [--jobs N] [--mpirun LAUNCHER] [--studies]
 """
 import argparse
 import json
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -110,12 +114,13 @@ def up_to_date(cmd):
     return all(os.path.exists(d) and os.path.getmtime(d) <= out for d in cmd["depends"])
 
 
-def run_targets(build, tier, logs, listing, describe):
+def run_targets(build, tier, logs, listing, describe, launcher=()):
     """The targets of the listing, one after the other (each runs its repetitions on every core):
     a line per target as it finishes, one progress line meanwhile, each target's output in
     logs/<target>.log. The reproduction targets run their commands from
-    <build>/reproduce/commands.json directly; the studies go through the build tool (one of
-    them is a script target). Returns non-zero on the first failure."""
+    <build>/reproduce/commands.json directly, each started by `launcher` (the words of an mpirun
+    command) when one is given; the studies go through the build tool (one of them is a script
+    target). Returns non-zero on the first failure."""
     rdir = os.path.join(build, "reproduce")
     names = read_names(rdir, listing)
     commands = json.load(open(os.path.join(rdir, "commands.json"))) if listing == "targets.txt" else None
@@ -178,7 +183,7 @@ def run_targets(build, tier, logs, listing, describe):
             open_target(n, False)
             log = os.path.join(logs, f"{n}.log")
             # In the directory its custom command runs in (CMake's default for it).
-            rc = run_logged([cmd["program"]] + cmd["args"], log, line, cwd=rdir)
+            rc = run_logged(list(launcher) + [cmd["program"]] + cmd["args"], log, line, cwd=rdir)
             if rc:
                 progress.clear()
                 return fail(f"target {n}", log)
@@ -194,9 +199,10 @@ def run_targets(build, tier, logs, listing, describe):
     return 0
 
 
-def write_run_record(rdir, tier, jobs, phases, total, compiled, fresh):
+def write_run_record(rdir, tier, jobs, phases, total, compiled, fresh, mpirun):
     """<build>/reproduce/last_run.json: the wall time of each phase of this run and of each target
-    (from timings.json), with the commit, the tier and the core count, so that the documentation's
+    (from timings.json), with the commit, the tier, the core count and the MPI launcher of the
+    targets (null: one process each), so that the documentation's
     cost figures are read from a file (tools/readme_cost.py) rather than typed."""
     def git(*args):
         r = subprocess.run(["git", "-C", REPO] + list(args), capture_output=True, text=True)
@@ -207,7 +213,7 @@ def write_run_record(rdir, tier, jobs, phases, total, compiled, fresh):
     record = {"tier": tier, "jobs": jobs, "cores": os.cpu_count(), "commit": git("rev-parse", "--short", "HEAD"),
               "dirty": bool(git("status", "--porcelain", "--untracked-files=no")),
               "date": time.strftime("%Y-%m-%d"), "total_s": total, "phases_s": phases,
-              "compiled_units": compiled, "fresh_build": fresh,
+              "compiled_units": compiled, "fresh_build": fresh, "mpirun": mpirun,
               "targets_s": {n: t for n, t in timings.get(tier, {}).items() if n in names}}
     path = os.path.join(rdir, "last_run.json")
     json.dump(record, open(path + ".tmp", "w"), indent=1)
@@ -233,7 +239,15 @@ def main():
                          "run record's whole command is then a fresh clone's cost")
     ap.add_argument("--studies", action="store_true",
                     help="run the optional studies instead and copy their documents to paper/data/")
+    ap.add_argument("--mpirun", default=None, metavar="LAUNCHER",
+                    help="start every reproduction target with this MPI launcher, e.g. 'mpirun -np 4': its "
+                         "repetitions are dealt to the ranks, with the numbers of one process")
     a = ap.parse_args()
+    launcher = shlex.split(a.mpirun) if a.mpirun else []
+    if a.mpirun is not None and not launcher:
+        ap.error("--mpirun needs a launcher, e.g. --mpirun 'mpirun -np 4'")
+    if launcher and a.studies:
+        ap.error("--mpirun starts the reproduction targets; the studies run through the build tool, in one process each")
     build, jobs = a.build, ["-j", str(a.jobs)]
     logs = os.path.join(build, "logs")
     os.makedirs(logs, exist_ok=True)
@@ -249,7 +263,8 @@ def main():
 
     # Only what the reproduction runs: the simulator and the drivers (tests and benchmarks
     #    are built by `make test` / `make bench`).
-    print(f"reproduce-all: tier '{tier}', logs in {logs}/", flush=True)
+    under = f", targets under '{a.mpirun}'" if launcher else ""
+    print(f"reproduce-all: tier '{tier}'{under}, logs in {logs}/", flush=True)
     log = os.path.join(logs, "build.log")
     t = time.time()
     if run_logged(["cmake", "--build", build, "--target", "reproduce-programs", "springblock_pattern"] + jobs, log):
@@ -265,7 +280,7 @@ def main():
     studies = a.studies
     t = time.time()
     rc = run_targets(build, tier, logs, "studies.txt" if studies else "targets.txt",
-                     (lambda n: "") if studies else counter.line)
+                     (lambda n: "") if studies else counter.line, launcher)
     if rc:
         return rc
     phases["targets"] = time.time() - t
@@ -298,7 +313,7 @@ def main():
             extra = os.path.join(build, "paper", "report.html")
         phases[step] = time.time() - t
         print(f"  {step:<14}{fmt(phases[step]):>8}   {extra}", flush=True)
-    write_run_record(rdir, tier, a.jobs, phases, time.time() - t_start, compiled, a.fresh_build)
+    write_run_record(rdir, tier, a.jobs, phases, time.time() - t_start, compiled, a.fresh_build, a.mpirun)
     print(f"reproduce-all: done in {fmt(time.time() - t_start)} (tier {tier}); "
           f"verdicts in {os.path.join(rdir, 'summary.tsv')}", flush=True)
     return 0

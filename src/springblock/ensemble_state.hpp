@@ -13,4 +13,9 @@ nlohmann::json ensemble_state(const EnsembleResult& e);
 // Throws InputError("state") when `j` is not a state ensemble_state wrote.
 EnsembleResult ensemble_from_state(const nlohmann::json& j);
 
+// One repetition's part of that state, its mu(t) series and stress snapshots included: what a
+// repetition run on another MPI rank sends back, to be read back bit for bit.
+nlohmann::json repetition_state(const RunResult& r);
+RunResult repetition_from_state(const nlohmann::json& j);
+
 }  // namespace sb

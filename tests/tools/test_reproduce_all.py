@@ -2,7 +2,8 @@
 """tools/reproduce_all.py runs the reproduction targets itself from <build>/reproduce/commands.json
 (no simulation here, a second): a target runs when its output is missing or older than an input,
 as make would; a target whose input another target has just rewritten runs again; each target's
-output goes to its own log; a failing target stops the run with its log's tail."""
+output goes to its own log; a launcher (--mpirun) starts each target; a failing target stops the
+run with its log's tail."""
 import contextlib
 import io
 import json
@@ -71,7 +72,7 @@ class RunTargets(unittest.TestCase):
     def write_commands(self, fail):
         cmds = {}
         for n, deps in (("a", [self.program]), ("b", [self.program, self.out("a")])):
-            script = (f"echo '[{n}] 50.0% done'; echo ran >> {n}.runs; "
+            script = (f"echo '[{n}] 50.0% done'; echo ran >> {n}.runs; echo ${{SB_LAUNCHED:-no}} >> launched; "
                       + ("echo broken >&2; exit 3" if n == fail else f"echo '{{}}' > {self.out(n)}"))
             cmds[n] = {"program": "/bin/sh", "args": ["-c", script], "output": self.out(n), "depends": deps}
         with open(os.path.join(self.rdir, "commands.json"), "w") as f:
@@ -106,6 +107,16 @@ class RunTargets(unittest.TestCase):
         os.utime(self.out("b"), (time.time() - 20,) * 2)
         self.run_targets()
         self.assertEqual((self.runs("a"), self.runs("b")), (2, 2))
+
+    def test_a_launcher_starts_each_target(self):
+        printed = io.StringIO()
+        with contextlib.redirect_stdout(printed), contextlib.redirect_stderr(io.StringIO()):
+            rc = ra.run_targets(self.build, "paper", self.logs, "targets.txt", lambda n: "",
+                                ["/usr/bin/env", "SB_LAUNCHED=yes"])
+        self.assertEqual(rc, 0)
+        for n in ("a", "b"):
+            self.assertEqual(self.runs(n), 1)
+        self.assertEqual(open(os.path.join(self.rdir, "launched")).read().split(), ["yes", "yes"])
 
     def test_a_failure_stops_the_run(self):
         self.write_commands(fail="a")

@@ -7,15 +7,16 @@
 
 namespace sb::shell {
 
-std::optional<int> parse(CLI::App& app, int argc, char** argv, const std::string& program, const std::string& hint) {
+std::optional<int> parse(CLI::App& app, int argc, char** argv, const std::string& program, const std::string& hint,
+                         bool quiet) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return quiet ? kOk : app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return quiet ? kOk : app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(), hint.c_str());
+    if (!quiet) std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(), hint.c_str());
     return kBadInput;
   }
   return std::nullopt;

@@ -12,8 +12,9 @@ namespace sb::shell {
 
 // Parses argv into `app`. Returns the exit code when parsing already ends the program: help
 // printed (kOk), or a malformed command line (kBadInput, "<program>: <what>" and then `hint` on
-// stderr). nullopt: go on.
-std::optional<int> parse(CLI::App& app, int argc, char** argv, const std::string& program, const std::string& hint);
+// stderr; with `quiet`, nothing printed: another process says it). nullopt: go on.
+std::optional<int> parse(CLI::App& app, int argc, char** argv, const std::string& program, const std::string& hint,
+                         bool quiet = false);
 
 // argv joined by spaces: the command recorded in every output's provenance.
 std::string command_line(int argc, char** argv);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "springblock/ensemble/jobs.hpp"
 #include "springblock/ensemble/observation.hpp"
 #include "springblock/ensemble/shared_trajectory.hpp"
 #include "springblock/ensemble/statistics.hpp"
@@ -11,65 +12,39 @@
 #include "springblock/pool/thread_pool.hpp"
 
 namespace sb {
-namespace {
+namespace ensemble_detail {
 
-using namespace ensemble_detail;
-
-struct Job {
-  int scene, rep;  // the scene leads its group (group_by_trajectory)
-};
-
-std::vector<Job> make_jobs(const std::vector<Scene>& scenes, const std::vector<std::vector<int>>& members) {
-  std::vector<Job> jobs;
+EnsembleJobs plan_jobs(const std::vector<Scene>& scenes, std::vector<EnsembleResult>& out) {
+  for (std::size_t k = 0; k < scenes.size(); ++k) out[k].runs.resize(scenes[k].reps);
+  EnsembleJobs plan;
+  plan.members = group_by_trajectory(scenes, out);
   for (int k = 0; k < static_cast<int>(scenes.size()); ++k)
-    if (!members[k].empty())
-      for (int r = 0; r < scenes[k].reps; ++r) jobs.push_back({k, r});
-  return jobs;
+    if (!plan.members[k].empty())
+      for (int r = 0; r < scenes[k].reps; ++r) plan.jobs.push_back({k, r});
+  return plan;
 }
 
-// Threads over the jobs: the most any scene asks for (0 = all cores), at most one a job.
-int pool_threads(const std::vector<Scene>& scenes, std::size_t n_jobs) {
-  int threads = 1;
-  for (const Scene& sc : scenes) threads = std::max(threads, resolve_threads(sc.threads));
-  return std::max(1, std::min(threads, static_cast<int>(n_jobs)));
-}
-
-// Each job's weight in the overall fraction done, per simulated nanosecond: its scene's weight
-// (by default reps x duration x N) shared among the scene's repetitions, over the total.
-std::vector<double> progress_weights(const std::vector<Scene>& scenes, const std::vector<Job>& jobs,
-                                     const std::vector<double>& weights) {
-  std::vector<double> per_ns(jobs.size());
-  double total = 0;
-  for (std::size_t j = 0; j < jobs.size(); ++j) {
-    const Scene& sc = scenes[jobs[j].scene];
-    const double w = weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[jobs[j].scene];
-    per_ns[j] = w / sc.reps / (sc.duration() * 1e9);
-    total += w / sc.reps;
-  }
-  for (double& w : per_ns) w /= total;
-  return per_ns;
-}
-
-// Job `job`: a repetition of a scene of its own, or of a group observed on one run.
-void run_job(const std::vector<Scene>& scenes, const std::vector<int>& group, Job job,
-             const std::atomic<bool>* interrupt, std::atomic<std::int64_t>* progress_ns,
-             std::vector<EnsembleResult>& out) {
-  if (group.size() == 1) {
-    out[job.scene].runs[job.rep] = run_repetition(scenes[job.scene], job.rep, interrupt, progress_ns);
-    return;
-  }
+// A repetition of a scene of its own, or of a group observed on one run.
+std::vector<RunResult> run_job(const std::vector<Scene>& scenes, const EnsembleJobs& plan, int j,
+                               const std::atomic<bool>* interrupt, std::atomic<std::int64_t>* progress_ns) {
+  const EnsembleJob job = plan.jobs[j];
+  const auto& group = plan.members[job.scene];
+  if (group.size() == 1) return {run_repetition(scenes[job.scene], job.rep, interrupt, progress_ns)};
   std::vector<const Scene*> views;
   for (int m : group) views.push_back(&scenes[m]);
-  auto runs = run_shared_repetition(views, job.rep, interrupt, progress_ns);
+  return run_shared_repetition(views, job.rep, interrupt, progress_ns);
+}
+
+void store_job(const EnsembleJobs& plan, int j, std::vector<RunResult> runs, std::vector<EnsembleResult>& out) {
+  const EnsembleJob job = plan.jobs[j];
+  const auto& group = plan.members[job.scene];
   for (std::size_t v = 0; v < group.size(); ++v) out[group[v]].runs[job.rep] = std::move(runs[v]);
 }
 
-// Counts, statistics and wall time of each scene once its jobs are done.
-void finish(const std::vector<Scene>& scenes, const std::vector<std::vector<int>>& members,
-            const std::vector<Job>& jobs, const std::vector<char>& finished, int threads,
-            std::vector<EnsembleResult>& out) {
-  for (std::size_t j = 0; j < jobs.size(); ++j)
-    for (int m : members[jobs[j].scene]) out[m].finished_reps += finished[j];
+void finish_ensembles(const std::vector<Scene>& scenes, const EnsembleJobs& plan, const std::vector<char>& finished,
+                      int threads, std::vector<EnsembleResult>& out) {
+  for (std::size_t j = 0; j < plan.jobs.size(); ++j)
+    for (int m : plan.members[plan.jobs[j].scene]) out[m].finished_reps += finished[j];
   for (std::size_t k = 0; k < scenes.size(); ++k) {
     EnsembleResult& e = out[k];
     e.interrupted = e.finished_reps < scenes[k].reps;
@@ -83,6 +58,35 @@ void finish(const std::vector<Scene>& scenes, const std::vector<std::vector<int>
   }
 }
 
+}  // namespace ensemble_detail
+
+namespace {
+
+using namespace ensemble_detail;
+
+// Threads over the jobs: the most any scene asks for (0 = all cores), at most one a job.
+int pool_threads(const std::vector<Scene>& scenes, std::size_t n_jobs) {
+  int threads = 1;
+  for (const Scene& sc : scenes) threads = std::max(threads, resolve_threads(sc.threads));
+  return std::max(1, std::min(threads, static_cast<int>(n_jobs)));
+}
+
+// Each job's weight in the overall fraction done, per simulated nanosecond: its scene's weight
+// (by default reps x duration x N) shared among the scene's repetitions, over the total.
+std::vector<double> progress_weights(const std::vector<Scene>& scenes, const std::vector<EnsembleJob>& jobs,
+                                     const std::vector<double>& weights) {
+  std::vector<double> per_ns(jobs.size());
+  double total = 0;
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    const Scene& sc = scenes[jobs[j].scene];
+    const double w = weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[jobs[j].scene];
+    per_ns[j] = w / sc.reps / (sc.duration() * 1e9);
+    total += w / sc.reps;
+  }
+  for (double& w : per_ns) w /= total;
+  return per_ns;
+}
+
 }  // namespace
 
 std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, const std::atomic<bool>* interrupt,
@@ -90,13 +94,12 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
                                           const std::vector<double>& weights) {
   const auto wall0 = std::chrono::steady_clock::now();
   std::vector<EnsembleResult> out(scenes.size());
-  for (std::size_t k = 0; k < scenes.size(); ++k) out[k].runs.resize(scenes[k].reps);
-  const auto members = group_by_trajectory(scenes, out);
-  const auto jobs = make_jobs(scenes, members);
+  const auto plan = plan_jobs(scenes, out);
+  const auto& jobs = plan.jobs;
   std::vector<std::atomic<std::int64_t>> progress_ns(jobs.size());  // simulated time done, per job
   const int threads = pool_threads(scenes, jobs.size());
   const auto job = [&](int j) {
-    run_job(scenes, members[jobs[j].scene], jobs[j], interrupt, &progress_ns[j], out);
+    store_job(plan, j, run_job(scenes, plan, j, interrupt, &progress_ns[j]), out);
     return !(interrupt && interrupt->load());  // a repetition cut short is not a result
   };
   std::function<void()> report;
@@ -108,7 +111,7 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
       progress(f, seconds_since(wall0));
     };
   const auto finished = for_each_job(static_cast<int>(jobs.size()), threads, job, interrupt, report);
-  finish(scenes, members, jobs, finished, threads, out);
+  finish_ensembles(scenes, plan, finished, threads, out);
   if (scenes.size() == 1) out[0].wall_s = seconds_since(wall0);
   return out;
 }

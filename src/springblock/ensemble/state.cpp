@@ -49,6 +49,10 @@ Statistic statistic_from(const nlohmann::json& j) {
 
 }  // namespace ensemble_state_parts
 
+nlohmann::json repetition_state(const RunResult& r) { return ensemble_state_parts::run_state(r); }
+
+RunResult repetition_from_state(const nlohmann::json& j) { return ensemble_state_parts::run_from(j); }
+
 nlohmann::json ensemble_state(const EnsembleResult& e) {
   using namespace ensemble_state_parts;
   auto runs = nlohmann::json::array();

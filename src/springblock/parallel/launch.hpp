@@ -11,4 +11,12 @@ inline bool launched_by_mpirun() {
   return false;
 }
 
+// This process's rank as the launcher gives it, known before MPI starts (0 without mpirun): the
+// ranks read the same command line, and only rank 0 need say what is wrong with it.
+inline int launch_rank() {
+  for (const char* v : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+    if (const char* r = std::getenv(v)) return std::atoi(r);
+  return 0;
+}
+
 }  // namespace sb::parallel

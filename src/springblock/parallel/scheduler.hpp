@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 namespace sb::parallel {
@@ -53,6 +54,8 @@ class Scheduler {
   // The coordinator's verdict, given to every rank: whether to go on (false when the
   // coordinator refused its input; the others then stop too).
   virtual bool agree(bool coordinator_ok) = 0;
+  // The coordinator's `text`, given to every rank (what the others pass is ignored).
+  virtual std::string share(const std::string& text) = 0;
   // Runs `ids` (only the coordinator's list counts; workers are sent units). Hooks are called on
   // the coordinator only, from the calling thread. Rethrows a unit's exception.
   virtual Outcome run(const std::vector<int>& ids, const UnitRunner& run_unit, const Hooks& hooks,

@@ -12,6 +12,7 @@ class ThreadScheduler : public Scheduler {
   int ranks() const override { return 1; }
   int threads() const override { return threads_; }
   bool agree(bool ok) override { return ok; }
+  std::string share(const std::string& text) override { return text; }
 
   Outcome run(const std::vector<int>& ids, const UnitRunner& run_unit, const Hooks& hooks,
               const std::atomic<bool>* interrupt) override {

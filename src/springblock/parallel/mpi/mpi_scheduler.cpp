@@ -76,6 +76,17 @@ class MpiScheduler : public Scheduler {
     return v != 0;
   }
 
+  std::string share(const std::string& text) override {
+    unsigned long long n = text.size();
+    MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+    std::string out = rank_ == 0 ? text : std::string(n, '\0');
+    // In pieces: a count is an int.
+    constexpr unsigned long long kPiece = 1ULL << 30;
+    for (unsigned long long at = 0; at < n; at += kPiece)
+      MPI_Bcast(out.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_CHAR, 0, MPI_COMM_WORLD);
+    return out;
+  }
+
   void abort(int code) override { MPI_Abort(MPI_COMM_WORLD, code); }
 
   Outcome run(const std::vector<int>& ids, const UnitRunner& run_unit, const Hooks& hooks,
