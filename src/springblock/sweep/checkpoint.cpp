@@ -88,8 +88,12 @@ void Checkpoint::sync() {
 
 void Checkpoint::flush() {
   if (!file_) return;
-  file_->flush();
-  if (unsynced_ && steady_s() - last_sync_s_ >= 0.1) sync();
+  const double now = steady_s();
+  if (file_->held_bytes() >= kWriteBytes || now - last_write_s_ >= kWriteEvery) {
+    file_->flush();
+    last_write_s_ = now;
+  }
+  if (unsynced_ && now - last_sync_s_ >= kSyncEvery) sync();
 }
 
 void Checkpoint::assigned(const std::vector<int>& units, int rank) {

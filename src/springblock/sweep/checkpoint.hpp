@@ -1,9 +1,13 @@
 #pragma once
-// The checkpoint of a sweep: a JSON-lines file beside the results, one line appended per
-// finished unit with one write() as soon as the unit is in, so a sweep killed at any moment
-// (Ctrl-C, a dead rank, a killed job) loses at most the units in flight. fsync (which only a
-// crash of the machine itself needs) is grouped: at most every 0.1 s, since one per unit cost
-// rank 0 about 4 ms a unit on this machine and capped a sweep at ~250 units/s (README). Units
+// The checkpoint of a sweep: a JSON-lines file beside the results, one line per finished unit.
+// Lines are written together, with one write(), once kWriteBytes are held or kWriteEvery has
+// passed since the last write: a system call per unit would be most of rank 0's time per unit
+// when units are short (rank 0's own units arrive one at a time). So a sweep killed at any
+// moment (a dead rank, a killed job) loses at most the units in flight and those finished in
+// the last kWriteEvery, which a resume runs again; Ctrl-C writes them all (sync). fsync, which
+// only a crash of the machine itself needs, is grouped: at most every kSyncEvery. One per unit
+// cost rank 0 milliseconds a unit; one every 0.1 s still cost it more than all else per tiny
+// unit, since each waits for the disk; a machine crash loses at most kSyncEvery of work. Units
 // handed to a rank are logged too (not synced): on resume, those handed out but never finished
 // are reported as lost with the rank that had them. Only the coordinator (rank 0) touches the
 // file, and it keeps no record in memory: only where each finished unit's line starts, so that
@@ -53,7 +57,11 @@ class Checkpoint {
   void assigned(const std::vector<int>& units, int rank);
   void finished(int unit, const std::string& record_text);
   void finished(const nlohmann::json& record) { finished(record.at("unit").get<int>(), record.dump()); }
-  void flush();   // writes what is held; fsyncs if the last fsync is 0.1 s old
+  // Writes what is held if it is kWriteBytes or kWriteEvery old; fsyncs if the last fsync is
+  // kSyncEvery old.
+  void flush();
+  static constexpr std::size_t kWriteBytes = std::size_t{1} << 16;
+  static constexpr double kWriteEvery = 0.02, kSyncEvery = 1.0;  // seconds
   void sync();    // writes what is held and fsyncs now (the run stops)
   void remove();  // the sweep is complete: its results hold it all
 
@@ -63,6 +71,7 @@ class Checkpoint {
   std::string path_;
   std::unique_ptr<LineFile> file_;
   double last_sync_s_ = 0;            // steady-clock seconds of the last fsync
+  double last_write_s_ = 0;           // and of the last write
   bool unsynced_ = false;             // lines held or written since then
   std::vector<std::int64_t> offset_;  // per unit: where its record starts, -1 until finished
   int done_count_ = 0;

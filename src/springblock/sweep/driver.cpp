@@ -207,7 +207,7 @@ Report run_sweep(const Spec& spec, const OutputOptions& o, parallel::Scheduler& 
     cp->sync();
     return report(o, scenes, l, outcome, sched);
   }
-  cp->flush();
+  cp->sync();  // every record on disk before the results are written from them
   results.complete(header(o, scenes, l, outcome, sched, command_line), *cp);
   if (l.unit_records) l.unit_records->rename_to(o.units);
   cp->remove();  // the results hold every unit now

@@ -5,6 +5,7 @@
 // its '\n' is there). A line is read back by the offset it was written at, which is how the
 // coordinator keeps a record on disk instead of in memory. A file closed or destroyed writes the
 // lines it holds.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -24,6 +25,7 @@ class LineFile {
   // write(): how a batch of records costs one system call. Returns the offset it will start at.
   std::int64_t hold(const std::string& line);
   void flush();
+  std::size_t held_bytes() const { return held_.size(); }
   // The line starting at `offset`, without its '\n' (read from the file, or from the held lines).
   std::string line_at(std::int64_t offset) const;
   void sync();  // flush, then fsync
