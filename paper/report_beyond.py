@@ -185,6 +185,17 @@ def _adequate(f):
     return "-" if not f.get("converged") else "adequate" if f["adequate"] else "inadequate"
 
 
+def _largest_fixed_length(doc, patterns):
+    """The patterned surfaces' largest N at fixed L_x, e.g. '10800 (periodic:10,10) and 3600 (...)'."""
+    largest = doc["largest_fixed_length"]
+    return " and ".join(f"{largest[k]} ({patterns[k]})" for k in largest if patterns.get(k, "smooth") != "smooth")
+
+
+def _longest_modal_groove(scenes):
+    """The longest groove any fixed-L_x scene moved by its modes (modal_max_groove)."""
+    return max(s["x"]["modal_max_groove"] for s in scenes if s["x"]["family"] == "fixed_length")
+
+
 def _last_step(doc, t):
     """A series' change between its last two N, in combined standard errors."""
     from paper import scaling_fits as sf
@@ -224,8 +235,9 @@ def size_scaling_blocks(doc, path, figs):
                "their physical pawl and groove sizes kept at fixed L_x (block counts scaled with N). "
                f"N from {min(reps_by_N)} to {max(reps_by_N)}; whole runs (mu_s and mu_d) up to N = "
                f"{doc['largest_whole_run']}, larger chains stopped at their first slip (mu_s only), the patterned "
-               f"surfaces at fixed L_x only up to N = {doc['largest_patterned_fixed_length']} (cost: reproduce/"
-               f"size_scaling.cpp). Repetitions: {reps_text}. **Integrator**: {integrator_text(first)}, "
+               f"surfaces at fixed L_x only up to N = {_largest_fixed_length(doc, patterns)} (cost: reproduce/"
+               f"size_scaling.cpp; their grooves moved by their modes, up to {_longest_modal_groove(scenes)} "
+               f"blocks). Repetitions: {reps_text}. **Integrator**: {integrator_text(first)}, "
                f"{doc['duration_t0']:g} t0 per whole run; {cpu_seconds(doc):.0f} CPU s in all over {len(runs)} "
                f"repetitions ({doc['wall_seconds']:.0f} s wall). " + provenance_text(doc, path)),
          figure(figs, "size_scaling")]

@@ -24,10 +24,15 @@ Costs measured before choosing (one core, shared machine, one repetition): a who
 smooth chain at N = 3600 over 7.2 cm took 147 s (0.7 s at 1080; its fine blocks ring fast all
 through the sliding phase), so whole runs (mu_s and mu_d) stop at N = 1080 and larger chains stop
 at the first slip (stop_after_mu_s: mu_s only). To the first slip over 7.2 cm: smooth 19 s at
-108000; periodic 3 s at 3600 but 87 s at 10800 and hierarchical 8 s at 3600 and over 117 s at
-10800 (their grooves of hundreds of blocks are stepped, not propagated by modes), so the
-patterned surfaces at fixed L_x stop at N = 3600; at fixed l_x every surface reaches 108000
-(about 1.6 s per repetition at 10800). Repetitions: the tier's (20 at the paper tier) up to
+108000. The patterned surfaces' grooves at fixed L_x are hundreds of fine, fast blocks: stepped
+(the default modal_max_groove, 64) a first slip of periodic took 3 s at 3600 and 88 s at 10800,
+and of hierarchical 9 s at 3600. Propagated by their modes instead (modal_max_groove = the longest
+groove, up to 300 blocks: kModalGrooveMax), periodic took 1.5 s at 3600 and 34 s at 10800 and
+hierarchical 5.6 s at 3600, and ten repetitions of periodic at 3600 gave the same mu_s either way
+(0.5218 +- 0.0007 stepped, 0.5217 +- 0.0010 by modes); hierarchical at 10800 (grooves of 900
+blocks) took 225 s as modes. So the fixed-L_x grooves are modal up to 300 blocks, periodic at fixed
+L_x goes to N = 10800 and hierarchical to 3600; at fixed l_x every surface reaches 108000 (about
+1.6 s per repetition at 10800; its grooves keep N = 360's sizes). Repetitions: the tier's (20 at the paper tier) up to
 N = 1080, then at most 10 (3600, 10800), 5 (36000) and 3 (108000). The smoke tier stops at 360.
 Criterion, fixed before any run (paper/choices.md, "Size scaling"): paper/scaling_fits.py fits
 each family's mu against N by weighted least squares on the repetitions' standard errors, (i)
@@ -36,11 +41,12 @@ chi^2 p-value (adequate when p >= 0.01). A candidate variable X collapses a surf
 for a quantity when the one curve mu = a + b X^-c fitted to both families' points together is
 adequate by the same rule; a candidate that is constant over a family can collapse only if that
 family is flat.
-Cost: aimed at about 10 CPU minutes at the paper tier; measured 921 CPU s (15 min) over 612
-repetitions, 969 s wall on 2 shared cores, the repetitions at N = 108000 on the patterned surfaces
-at fixed l_x taking 44 and 58 CPU s each (the document's wall_seconds and every run's cpu_s).
+Cost: aimed at about 10 CPU minutes at the paper tier, and over it (periodic at fixed L_x and
+N = 10800 adds about 340 CPU s to the 921 of the study without it); the report gives the measured
+total and the cost per repetition of the large chains (the document's wall_seconds and every
+run's cpu_s).
 Output: every scene's statistics and runs (their cpu_s are the study's cost), with x = {family, surface, N, L_x_cm, l_x_cm,
-K_int_over_K_s, elastic_length_cm, Lambda, n_e, groove_blocks, whole_run}.
+K_int_over_K_s, elastic_length_cm, Lambda, n_e, groove_blocks, whole_run, modal_max_groove}.
 */
 #include <algorithm>
 #include <cmath>
@@ -54,16 +60,19 @@ constexpr int kRefN = 360;           // the paper's chain the patterns are laid 
 constexpr double kRefLengthCm = 7.2;  // fixed-length family
 constexpr double kBlockCm = 0.02;     // fixed-block family: l_x of the reference chain
 constexpr int kLargestWholeRun = 1080;
-constexpr int kLargestPatternedFixedLength = 3600;
+constexpr int kModalGrooveMax = 300;  // fixed L_x: grooves up to this long move by their modes
 const std::vector<int> kN = {36, 108, 360, 1080, 3600, 10800, 36000, 108000};
 
 struct Surface {
   std::string id;
   std::vector<int> counts;  // block counts at kRefN (periodic: n_p, n_g; hierarchical: G1, G2)
   std::string kind;
+  int longest_groove;       // blocks, at kRefN
+  int largest_fixed_length; // the largest N of the fixed-L_x family (cost: the NARRATIVE)
 };
-const std::vector<Surface> kSurfaces = {
-    {"smooth", {}, "smooth"}, {"periodic_10_10", {10, 10}, "periodic"}, {"hierarchical_30_10", {30, 10}, "hierarchical"}};
+const std::vector<Surface> kSurfaces = {{"smooth", {}, "smooth", 0, 108000},
+                                        {"periodic_10_10", {10, 10}, "periodic", 10, 10800},
+                                        {"hierarchical_30_10", {30, 10}, "hierarchical", 30, 3600}};
 
 // The pattern of `sf` on N blocks, its counts scaled by `scale` (N / 360 at fixed L_x, 1 at fixed l_x).
 std::string pattern_of(const Surface& sf, int scale_num, int scale_den) {
@@ -92,13 +101,15 @@ int main(int argc, char** argv) {
             for (int N : kN) {
               if (ctx.tier.reduced && N > kRefN) continue;
               const bool fixed_length = family == "fixed_length";
-              if (fixed_length && sf.kind != "smooth" && N > kLargestPatternedFixedLength) continue;
+              if (fixed_length && N > sf.largest_fixed_length) continue;
               const double L_cm = fixed_length ? kRefLengthCm : N * kBlockCm;
               const std::string pattern = fixed_length ? pattern_of(sf, N, kRefN) : pattern_of(sf, 1, 1);
               sb::Scene s = ctx.chain(N, fmt::format("{:.6g}cm", L_cm), pattern);
               s.reps = reps_at(N, ctx.tier.reps);
               const bool whole = N <= kLargestWholeRun;
               s.run.stop_after_mu_s = !whole;
+              const int longest = sf.longest_groove * (fixed_length ? N / kRefN : 1);
+              if (longest <= kModalGrooveMax) s.run.modal_max_groove = std::max(s.run.modal_max_groove, longest);
               const auto d = s.derived();
               const double ratio = d.K_int_N_per_m / d.K_s_N_per_m;
               const double ell_cm = 100 * d.l_x_m * std::sqrt(ratio);
@@ -109,7 +120,7 @@ int main(int argc, char** argv) {
                   {{"family", family}, {"surface", sf.id}, {"pattern", pattern}, {"N", N}, {"L_x_cm", L_cm},
                    {"l_x_cm", 100 * d.l_x_m}, {"K_int_over_K_s", ratio}, {"elastic_length_cm", ell_cm},
                    {"Lambda", L_cm / ell_cm}, {"n_e", std::sqrt(ratio)}, {"groove_blocks", groove},
-                   {"whole_run", whole}},
+                   {"whole_run", whole}, {"modal_max_groove", s.run.modal_max_groove}},
                   s};
               out.push_back(ls);
             }
@@ -123,6 +134,8 @@ int main(int argc, char** argv) {
                            "and mu = a + b N^-c, adequate when chi^2 p >= 0.01. A variable X collapses the two "
                            "families when one curve mu = a + b X^-c through both families' points is adequate.";
         doc["largest_whole_run"] = kLargestWholeRun;
-        doc["largest_patterned_fixed_length"] = kLargestPatternedFixedLength;
+        nlohmann::json largest;
+        for (const auto& sf : kSurfaces) largest[sf.id] = sf.largest_fixed_length;
+        doc["largest_fixed_length"] = largest;
       });
 }

@@ -73,8 +73,9 @@ struct RunControl {
   // event method: ringing groove-only runs (no contact block, so no stop to search for; only
   // their stuck neighbours' crossings) of up to this many blocks are propagated by their modes
   // too. Separate from modal_max_run because a groove run has no stop events: it pays off up to
-  // much longer runs (bench_methods, modal_groove/*): 64, the longest allowed (paper/choices.md,
-  // Integration).
+  // much longer runs (bench_methods, modal_groove/*): 64 on the paper's chains (paper/choices.md,
+  // Integration); up to 1024 allowed, for chains so fine that stepping a long groove costs more
+  // than its O(n^2) projections (the size-scaling study's).
   int modal_max_groove = kDefaultModalMaxGroove;
   // event method: the stepped runs move by their modes (Stepper::Exact) while none is longer than
   // exact_max_run blocks, and by Dormand-Prince steps otherwise (a run's projection costs O(n^2)
