@@ -57,7 +57,7 @@ class MpiScheduler : public Scheduler {
     // A send to a dead rank may fail rather than end this process: the coordinator then takes
     // that rank for dead.
     MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
-    threads_ = resolve_threads(threads);
+    threads_ = threads > 0 || std::getenv("OMP_NUM_THREADS") ? resolve_threads(threads) : share_of_node();
   }
   // Every rank gets here: run() aborts the job itself when one of them fails inside it.
   ~MpiScheduler() override {
@@ -65,6 +65,16 @@ class MpiScheduler : public Scheduler {
       MPI_Finalize();
     else
       std::atexit(end_job_after_lost_rank);  // after the caller's output (the ensemble is printed later)
+  }
+  // "All cores" for one of several ranks on a machine: its share of them (at least one), so that
+  // mpirun -np 4 on 4 cores runs 4 threads in all, not 16. The numbers do not depend on it.
+  static int share_of_node() {
+    MPI_Comm node;
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    int local = 1;
+    MPI_Comm_size(node, &local);
+    MPI_Comm_free(&node);
+    return std::max(1, resolve_threads(0) / std::max(1, local));
   }
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
