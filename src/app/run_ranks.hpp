@@ -12,8 +12,6 @@ namespace sb::app {
 
 // Without mpirun: sb::run_ensemble. Under mpirun: the ensemble on rank 0 and nothing on the
 // other ranks (they print nothing). An interrupt on rank 0 says so and ends every rank (exit 130).
-// Throws InputError when the scene keeps a series or stress snapshots (repetition 0's, kept in
-// memory, are not sent between ranks).
 std::optional<EnsembleResult> run_ensemble_on_ranks(const Scene& scene, const std::atomic<bool>* interrupt,
                                                     std::function<void(double, double)> progress);
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # springblock sweep under mpirun: 1, 2 and 4 oversubscribed ranks give the numbers of one
-# process, bit for bit, and so does springblock run --reps 8 on 2 ranks; a worker rank killed halfway is reported with the unit it lost, and
+# process, bit for bit, and so does springblock run --reps 8 on 2 ranks (its --series too); a
+# worker rank killed halfway is reported with the unit it lost, and
 # --resume (on another rank count) computes only the missing units, again with the same numbers;
 # a worker stopped by SIGTERM gives its unit back and the others finish the sweep;
 # a killed job leaves a valid partial results file (OUT.partial) and no OUT; units dealt in
@@ -52,6 +53,11 @@ opts=(--N 40 --reps 8 --seed 11 --duration 3t0 --pattern periodic:3,1 --velocity
 mpi -np 2 "$sb" run "${opts[@]}" --threads 1 >"$dir/run2.json" 2>"$dir/run2.err" || { echo "FAIL run under mpirun"; cat "$dir/run2.err"; fail=1; }
 [ "$(wc -l <"$dir/run2.json")" -eq 1 ] || { echo "FAIL run under mpirun printed more than rank 0's line"; fail=1; }
 "$py" "$here/compare_results.py" "$dir/run1.json" "$dir/run2.json" || { echo "FAIL run: 2 ranks differ"; fail=1; }
+# Repetition 0's mu(t) series comes back from whichever rank ran it, to the last digit.
+"$sb" run "${opts[@]}" --series "$dir/s1.tsv" >/dev/null 2>&1 || { echo "FAIL run --series in one process"; fail=1; }
+mpi -np 2 "$sb" run "${opts[@]}" --threads 1 --series "$dir/s2.tsv" >/dev/null 2>"$dir/s2.err" ||
+  { echo "FAIL run --series under mpirun"; cat "$dir/s2.err"; fail=1; }
+cmp -s <(grep -v '^#' "$dir/s1.tsv") <(grep -v '^#' "$dir/s2.tsv") || { echo "FAIL run --series: 2 ranks differ"; fail=1; }
 
 # A worker rank killed early (3 ranks, one thread each; 24 units of 0.2 to 0.5 s).
 cat >"$dir/k.toml" <<'TOML'
