@@ -14,10 +14,10 @@ import argparse
 import csv
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
+from bench.child import run_child
 from tools.generated_block import write_atomic
 from tools.machine import REPO, load_average, machine
 
@@ -29,10 +29,8 @@ PUBLISHED = os.path.join(REPO, "tables", "published_tab_pat0.tsv")
 
 def timed(cmd):
     """(stdout, CPU seconds of the child, exit code) of one command."""
-    child = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
-    out = child.stdout.read()
-    _, status, usage = os.wait4(child.pid, 0)
-    return out, usage.ru_utime + usage.ru_stime, os.waitstatus_to_exitcode(status)
+    out, usage, code = run_child(cmd, capture=True)
+    return out, usage.ru_utime + usage.ru_stime, code
 
 
 def published(pattern):

@@ -16,10 +16,10 @@ Usage: python3 -m bench.sweep_memory --springblock BIN [--units 100000 1000000] 
 import argparse
 import json
 import os
-import subprocess
 import tempfile
 import time
 
+from bench.child import run_child
 from tools.generated_block import write_atomic
 from tools.machine import load_average, machine
 
@@ -37,11 +37,9 @@ def sweep_file(path, units):
 def peak(springblock, toml, out, threads):
     """(maximum RSS in MB, wall seconds) of one sweep."""
     t0 = time.monotonic()
-    child = subprocess.Popen([springblock, "sweep", toml, "--out", out, "--threads", str(threads)],
-                             stdout=subprocess.DEVNULL)
-    _, status, usage = os.wait4(child.pid, 0)
-    if os.waitstatus_to_exitcode(status) != 0:
-        raise SystemExit(f"{springblock} sweep {toml} failed ({os.waitstatus_to_exitcode(status)})")
+    _, usage, code = run_child([springblock, "sweep", toml, "--out", out, "--threads", str(threads)])
+    if code != 0:
+        raise SystemExit(f"{springblock} sweep {toml} failed ({code})")
     return usage.ru_maxrss / 1024, time.monotonic() - t0
 
 

@@ -41,10 +41,10 @@ chi^2 p-value (adequate when p >= 0.01). A candidate variable X collapses a surf
 for a quantity when the one curve mu = a + b X^-c fitted to both families' points together is
 adequate by the same rule; a candidate that is constant over a family can collapse only if that
 family is flat.
-Cost: aimed at about 10 CPU minutes at the paper tier, and over it (periodic at fixed L_x and
-N = 10800 adds about 340 CPU s to the 921 of the study without it); the report gives the measured
-total and the cost per repetition of the large chains (the document's wall_seconds and every
-run's cpu_s).
+Cost: aimed at about 10 CPU minutes at the paper tier, and over it (ten first slips of periodic
+at fixed L_x and N = 10800 at about 34 s each come on top); the report gives the measured total
+and the cost per repetition of the large chains (the document's wall_seconds and every run's
+cpu_s).
 Output: every scene's statistics and runs (their cpu_s are the study's cost), with x = {family, surface, N, L_x_cm, l_x_cm,
 K_int_over_K_s, elastic_length_cm, Lambda, n_e, groove_blocks, whole_run, modal_max_groove}.
 */

@@ -2,6 +2,7 @@
 tools that write the generated blocks of the README and the documentation (readme_results.py;
 readme_cost.py and cost_model.py, into docs/cost.md)."""
 import os
+import sys
 import tempfile
 
 
@@ -29,3 +30,23 @@ def write_atomic(path, text):
     except BaseException:
         os.unlink(tmp)
         raise
+
+
+def block_actions(parser, page):
+    """The --page, --write and --print options of a tool that writes one generated block."""
+    parser.add_argument("--page", default=page)
+    act = parser.add_mutually_exclusive_group(required=True)
+    act.add_argument("--write", action="store_true")
+    act.add_argument("--print", action="store_true")
+
+
+def put_block(args, begin, end, text, tool):
+    """Print the block (--print) or replace it in args.page, written whole (--write). Returns 0."""
+    if args.print:
+        print(text)
+        return 0
+    with open(args.page) as f:
+        page = f.read()
+    write_atomic(args.page, replace_block(page, begin, end, text))
+    print(f"{tool}: wrote the block into {args.page}", file=sys.stderr)
+    return 0

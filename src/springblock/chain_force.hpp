@@ -67,6 +67,18 @@ SB_INLINE double force_checked(const BlockForceCoefficients& k, int i, double x_
   return F;
 }
 
+// force_checked on an interior block (0 < i < N - 1) without its end tests: the same additions,
+// so the same doubles, in a loop that vectorises (the friction observer's stuck forces).
+template <bool Damped>
+SB_INLINE double force_checked_interior(const BlockForceCoefficients& k, int i, double x_slider, const double* u,
+                                        const double* v, double f) {
+  double F = k.K_s[i] * (x_slider - u[i]) - f;
+  if constexpr (Damped) F -= k.m_gamma[i] * v[i];
+  F += k.K_int[i - 1] * (u[i - 1] - u[i]);
+  F += k.K_int[i] * (u[i + 1] - u[i]);
+  return F;
+}
+
 template <bool Coupled, bool Damped>
 SB_INLINE double force_interior(const BlockForceCoefficients& k, int i, double x_slider, const double* u,
                                 const double* v, double f) {

@@ -20,6 +20,8 @@ enum class Stepper { Exact, Dopri5 };
 // longest run (paper/choices.md, Integration).
 inline constexpr int kDefaultModalMaxRun = 2;
 inline constexpr int kDefaultModalMaxGroove = 64;
+// The longest modal_max_groove accepted: a groove shape of n blocks holds 2 n^2 doubles.
+inline constexpr int kLongestModalGroove = 1024;
 inline constexpr int kDefaultExactMaxRun = 128;
 
 std::string stepper_name(Stepper s);

@@ -168,7 +168,8 @@ std::vector<Entry> integration_entries() {
           std::to_string(kDefaultModalMaxGroove) + "; 0 steps them)", std::to_string(kDefaultModalMaxGroove)},
      [](Scene& s, auto& k, auto& v) {
        const auto n = integer(k, v);
-       if (n < 0 || n > 1024) throw InputError(k, "modal_max_groove = " + v + " is outside [0, 1024]");
+       if (n < 0 || n > kLongestModalGroove)
+         throw InputError(k, "modal_max_groove = " + v + " is outside [0, " + std::to_string(kLongestModalGroove) + "]");
        s.run.modal_max_groove = static_cast<int>(n);
      }},
     {{"stepper", "event method: how sliding runs move: exact (default; by their modes, no step-size error) or dopri5 (Dormand-Prince steps under --tol)", "dopri5"},

@@ -119,7 +119,8 @@ void validate_run_control(const RunControl& r) {
   require(finite(r.tol) && r.tol >= 1e-14 && r.tol <= 1e-2, "tol", r.tol, "[1e-14, 1e-2]");
   require(finite(r.dt_s) && r.dt_s > 0 && r.dt_s <= 1, "dt", r.dt_s, "(0, 1 s]");
   require(r.modal_max_run >= 0 && r.modal_max_run <= 64, "modal_max_run", r.modal_max_run, "[0, 64]");
-  require(r.modal_max_groove >= 0 && r.modal_max_groove <= 1024, "modal_max_groove", r.modal_max_groove, "[0, 1024]");
+  require(r.modal_max_groove >= 0 && r.modal_max_groove <= kLongestModalGroove, "modal_max_groove",
+          r.modal_max_groove, "[0, " + std::to_string(kLongestModalGroove) + "]");
   require(r.exact_max_run >= 1 && r.exact_max_run <= 512, "exact_max_run", r.exact_max_run, "[1, 512]");
 }
 

@@ -25,6 +25,11 @@ struct EnsembleJobs {
 // observed on (trajectory_from).
 EnsembleJobs plan_jobs(const std::vector<Scene>& scenes, std::vector<EnsembleResult>& out);
 
+// Each job's share of the whole work, for progress: its scene's weight (`weights`, or by default
+// reps x duration x N) over the scene's repetitions, over the total.
+std::vector<double> job_shares(const std::vector<Scene>& scenes, const EnsembleJobs& plan,
+                               const std::vector<double>& weights);
+
 // Job `j`'s runs, one per member of its group, in the group's order.
 std::vector<RunResult> run_job(const std::vector<Scene>& scenes, const EnsembleJobs& plan, int j,
                                const std::atomic<bool>* interrupt, std::atomic<std::int64_t>* progress_ns);

@@ -3,6 +3,7 @@
 // scene starts on the next scene instead of waiting for the others.
 #include <algorithm>
 #include <chrono>
+#include <numeric>
 
 #include "springblock/ensemble/jobs.hpp"
 #include "springblock/ensemble/observation.hpp"
@@ -33,6 +34,19 @@ std::vector<RunResult> run_job(const std::vector<Scene>& scenes, const EnsembleJ
   std::vector<const Scene*> views;
   for (int m : group) views.push_back(&scenes[m]);
   return run_shared_repetition(views, job.rep, interrupt, progress_ns);
+}
+
+std::vector<double> job_shares(const std::vector<Scene>& scenes, const EnsembleJobs& plan,
+                               const std::vector<double>& weights) {
+  std::vector<double> w(plan.jobs.size());
+  for (std::size_t j = 0; j < w.size(); ++j) {
+    const Scene& sc = scenes[plan.jobs[j].scene];
+    w[j] = (weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[plan.jobs[j].scene]) / sc.reps;
+  }
+  const double total = std::accumulate(w.begin(), w.end(), 0.0);
+  if (total > 0)
+    for (double& x : w) x /= total;
+  return w;
 }
 
 void store_job(const EnsembleJobs& plan, int j, std::vector<RunResult> runs, std::vector<EnsembleResult>& out) {
@@ -71,19 +85,11 @@ int pool_threads(const std::vector<Scene>& scenes, std::size_t n_jobs) {
   return std::max(1, std::min(threads, static_cast<int>(n_jobs)));
 }
 
-// Each job's weight in the overall fraction done, per simulated nanosecond: its scene's weight
-// (by default reps x duration x N) shared among the scene's repetitions, over the total.
-std::vector<double> progress_weights(const std::vector<Scene>& scenes, const std::vector<EnsembleJob>& jobs,
+// Each job's weight in the overall fraction done, per simulated nanosecond of its repetition.
+std::vector<double> progress_weights(const std::vector<Scene>& scenes, const EnsembleJobs& plan,
                                      const std::vector<double>& weights) {
-  std::vector<double> per_ns(jobs.size());
-  double total = 0;
-  for (std::size_t j = 0; j < jobs.size(); ++j) {
-    const Scene& sc = scenes[jobs[j].scene];
-    const double w = weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[jobs[j].scene];
-    per_ns[j] = w / sc.reps / (sc.duration() * 1e9);
-    total += w / sc.reps;
-  }
-  for (double& w : per_ns) w /= total;
+  std::vector<double> per_ns = job_shares(scenes, plan, weights);
+  for (std::size_t j = 0; j < per_ns.size(); ++j) per_ns[j] /= scenes[plan.jobs[j].scene].duration() * 1e9;
   return per_ns;
 }
 
@@ -104,7 +110,7 @@ std::vector<EnsembleResult> run_ensembles(const std::vector<Scene>& scenes, cons
   };
   std::function<void()> report;
   if (progress)
-    report = [&, per_ns = progress_weights(scenes, jobs, weights)] {
+    report = [&, per_ns = progress_weights(scenes, plan, weights)] {
       double f = 0;
       for (std::size_t j = 0; j < jobs.size(); ++j)
         f += per_ns[j] * static_cast<double>(progress_ns[j].load(std::memory_order_relaxed));

@@ -19,19 +19,12 @@ SB_KERNEL_CLONES void stuck_forces(const ForceCoefficients& k, int lo, int hi, d
                                    const double* __restrict u, double* __restrict f) {
   for (int i = lo; i < hi; ++i) f[i] = force_interior<true, false>(k, i, slider, u, nullptr, 0.0);
 }
-// The same on a chain whose blocks differ, each block's own springs, with the additions of
-// Chain::driving_force (force_checked: slider spring, damping, left spring, right spring) so
-// that a stuck block's force has the same doubles whichever of the two computes it; without
-// its branches the loop vectorises.
+// The same on a chain whose blocks differ, with each block's springs in Chain::driving_force's
+// order of additions (force_checked_interior), so that a stuck block's force has the same doubles
+// whichever of the two computes it.
 SB_KERNEL_CLONES void stuck_forces(const BlockForceCoefficients& k, int lo, int hi, double slider,
                                    const double* __restrict u, const double* __restrict v, double* __restrict f) {
-  for (int i = lo; i < hi; ++i) {
-    double F = k.K_s[i] * (slider - u[i]) - 0.0;
-    F -= k.m_gamma[i] * v[i];
-    F += k.K_int[i - 1] * (u[i - 1] - u[i]);
-    F += k.K_int[i] * (u[i + 1] - u[i]);
-    f[i] = F;
-  }
+  for (int i = lo; i < hi; ++i) f[i] = force_checked_interior<true>(k, i, slider, u, v, 0.0);
 }
 
 // The friction force of every block summed over the chain, |F| and F: a sliding block's kinetic

@@ -28,21 +28,6 @@ std::vector<Scene> shared_scenes(Scheduler& sched, const std::vector<Scene>& sce
   return out;
 }
 
-// A job's share of the whole: its scene's weight (by default reps x duration x N) over its
-// repetitions, over the total.
-std::vector<double> job_weights(const std::vector<Scene>& scenes, const EnsembleJobs& plan,
-                                const std::vector<double>& weights) {
-  std::vector<double> w(plan.jobs.size());
-  for (std::size_t j = 0; j < w.size(); ++j) {
-    const Scene& sc = scenes[plan.jobs[j].scene];
-    w[j] = (weights.empty() ? sc.reps * sc.duration() * sc.geometry.N : weights[plan.jobs[j].scene]) / sc.reps;
-  }
-  const double total = std::accumulate(w.begin(), w.end(), 0.0);
-  if (total > 0)
-    for (double& x : w) x /= total;
-  return w;
-}
-
 // Job ids, the dearest repetition first (duration x N of the scene that runs it), so that no long
 // one starts last; equal costs keep their order.
 std::vector<int> dearest_first(const std::vector<Scene>& scenes, const EnsembleJobs& plan) {
@@ -76,7 +61,7 @@ std::optional<std::vector<EnsembleResult>> run_ensembles_on(Scheduler& sched, co
     return std::nullopt;
   }
   std::vector<char> finished(plan.jobs.size(), 0);
-  const auto share = job_weights(scenes, plan, weights);
+  const auto share = ensemble_detail::job_shares(scenes, plan, weights);
   double done = 0;
   Hooks hooks;
   hooks.finished = [&](int j, int, nlohmann::json record) {

@@ -1,6 +1,8 @@
 // The shape of one run of a chain whose blocks differ in slider spring, mass or internal springs:
 // the same pieces as a uniform chain's (run_shape.cpp), from the run's own blocks.
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 #include "springblock/integrate/linear/general_modes.hpp"
 #include "springblock/integrate/linear/run_shape.hpp"
@@ -10,8 +12,9 @@ namespace sb::event_detail {
 const RunShape& RunShapes::general(BlockRange r, std::uint8_t parts) {
   auto it = ranged_.find({r.lo, r.hi});
   if (it == ranged_.end()) {
-    auto shape = by_content_.find(general_key(r));
-    if (shape == by_content_.end()) shape = by_content_.emplace(general_key(r), make_general(r)).first;
+    std::vector<double> key = general_key(r);
+    auto shape = by_content_.find(key);
+    if (shape == by_content_.end()) shape = by_content_.emplace(std::move(key), make_general(r)).first;
     it = ranged_.emplace(std::make_pair(r.lo, r.hi), &shape->second).first;
   }
   RunShape& sh = *it->second;
