@@ -40,6 +40,31 @@ void FanOut::sample_ringing(const Chain& c, const State& s, RingingForces& f) {
   deal(s, [&](Observer& o) { o.sample_ringing(c, s, f); });
 }
 
+// A view that does not take the sample still follows the forces' changes: its sums must hold the
+// same leaves at its next sample as a run of its own would.
+void FanOut::sample_active(const Chain& c, const State& s, const ActiveForces& f) {
+  const long long k = index_of(s.t);
+  for (auto& v : views_) {
+    if (v.obs->wants_stop()) continue;
+    if (!within_(s.t, v.t_end) || k < v.next_k) {
+      v.obs->follow_forces(c, s, f);
+      continue;
+    }
+    v.obs->sample_active(c, s, f);
+    v.next_k = k + 1;
+    record(v, s);
+  }
+}
+
+void FanOut::follow_forces(const Chain& c, const State& s, const ActiveForces& f) {
+  for (auto& v : views_)
+    if (!v.obs->wants_stop()) v.obs->follow_forces(c, s, f);
+}
+
+bool FanOut::takes_active_forces() const {
+  return std::all_of(views_.begin(), views_.end(), [](const View& v) { return v.obs->takes_active_forces(); });
+}
+
 void FanOut::switched(const Chain& c, const State& s, SwitchedBlocks blocks) {
   for (auto& v : views_)
     if (!v.obs->wants_stop() && within_(s.t, v.t_end)) v.obs->switched(c, s, blocks);

@@ -44,6 +44,9 @@ class FanOut final : public Observer {
   // A switch goes to each view whose own run would have made it: one not stopped, at a time
   // within its end (the runs' switches up to there are the shared run's).
   void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) override;
+  bool takes_active_forces() const override;
+  void sample_active(const Chain& chain, const State& state, const ActiveForces& f) override;
+  void follow_forces(const Chain& chain, const State& state, const ActiveForces& f) override;
   long sample_affine(const Chain& chain, const State& state, long k0, double dt, long n,
                      const AffineForces& f) override;
   // A view is offered the block only as a run of its own would offer it: whole, and only if it

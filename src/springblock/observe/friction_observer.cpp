@@ -114,6 +114,34 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
   record(c, s, sum_abs / cfg_.F_load, sum_signed / cfg_.F_load, n_sliding);
 }
 
+void FrictionObserver::follow_forces(const Chain& c, const State& s, const ActiveForces& f) {
+  // A live block's leaf holds 0 (its force is read at the sample); a sliding one's sign is its
+  // direction's, fixed while it slides.
+  auto put = [&](int i) {
+    const bool known = f.kind[i] == ActiveForces::kAffine || f.kind[i] == ActiveForces::kSliding;
+    active_->set(i, known ? f.a[i] : 0.0, known ? f.b[i] : 0.0, f.kind[i] == ActiveForces::kSliding, s.t);
+  };
+  if (!active_ || f.all_changed) {
+    if (!active_) active_ = std::make_unique<AffineForceTree>(c);
+    for (int i = 0; i < c.N; ++i)
+      if (c.contact[i]) put(i);
+    return;
+  }
+  for (int i : f.changed) put(i);
+}
+
+void FrictionObserver::sample_active(const Chain& c, const State& s, const ActiveForces& f) {
+  follow_forces(c, s, f);
+  const AffineTotals& known = active_->at(s.t);
+  double sum_abs = known.A + known.B * s.t, sum_signed = known.As + known.Bs * s.t;
+  for (int i : f.live) {
+    const double fi = friction_force(c, s, i);
+    sum_abs += std::fabs(fi);
+    sum_signed += fi;
+  }
+  record(c, s, sum_abs / cfg_.F_load, sum_signed / cfg_.F_load, known.n_sliding);
+}
+
 void FrictionObserver::record(const Chain& c, const State& s, double mu, double mu_signed, int n_sliding) {
   last_t_ = s.t;
 

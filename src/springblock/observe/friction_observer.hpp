@@ -69,6 +69,11 @@ class FrictionObserver final : public Observer {
   // show which samples may hold the peak: only those are looked at (loading_stretch).
   long sample_sums(const Chain& chain, const State& state, long k0, double dt, long n,
                    SampleStretch& stretch) override;
+  // mu(t) of an active phase from the forces the integrator knows: the affine and sliding ones
+  // summed in a tree kept from sample to sample (active_), the live ones read from the state.
+  bool takes_active_forces() const override { return true; }
+  void sample_active(const Chain& chain, const State& state, const ActiveForces& f) override;
+  void follow_forces(const Chain& chain, const State& state, const ActiveForces& f) override;
   bool wants_stop() const override;
   // mu(t) and stress snapshots need only contact blocks' forces (their own and their direct
   // neighbours' positions); groove interiors are never read.
@@ -136,6 +141,7 @@ class FrictionObserver final : public Observer {
   std::vector<double> f_contact_;  // per block: its friction force at the current sample (sample())
   SwitchedTotals switched_totals_;  // a per-block run's stretch totals (AffineForces::per_block)
   std::unique_ptr<RingingSums> ringing_;  // the sums of the integrator's exact forces (sample_ringing)
+  std::unique_ptr<AffineForceTree> active_;  // the known forces of active phases (sample_active)
   // SlidOrEvent: the slip events of the loading phase, and whether one has moved enough blocks.
   SlipEventObserver loading_events_;
   bool large_event_ = false;

@@ -2,6 +2,7 @@
 // Observers see the chain at sample times and at its switches; integrators call them and never
 // compute observables themselves (odeint's observer concept).
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "springblock/model.hpp"
@@ -48,6 +49,27 @@ class SwitchedBlocks {
   std::size_t n_;
 };
 
+// The contact forces of a sample of an active phase (something slides) as the integrator knows
+// them, block by block (kind[i]):
+//   kAffine   stuck, with nothing beside it moving off a known affine path: a[i] + b[i] t;
+//   kSliding  dir f_kinetic, a[i] (b[i] = 0);
+//   kLive     stuck beside a run that moves otherwise: read it from the state, which holds its
+//             own and its neighbours' positions at the sample;
+//   kNone     no contact (or not classified yet).
+// Between two samples only a few blocks change entry, so an observer that sums the forces keeps
+// the affine and sliding ones in a tree (AffineForceTree) and reads only the live ones: O(what
+// moves) a sample instead of O(N). changed lists the blocks whose entry changed since the
+// previous sample_active or follow_forces call (every block when all_changed).
+struct ActiveForces {
+  enum Kind : std::uint8_t { kNone, kAffine, kSliding, kLive };
+  const double* a;
+  const double* b;
+  const std::uint8_t* kind;
+  const std::vector<int>& changed;
+  bool all_changed;
+  const std::vector<int>& live;
+};
+
 class Observer {
  public:
   virtual ~Observer() = default;
@@ -70,6 +92,20 @@ class Observer {
   // nothing else. The default ignores it.
   virtual void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) {
     (void)chain, (void)state, (void)blocks;
+  }
+  // Whether the observer takes the samples of an active phase as ActiveForces (sample_active); the
+  // integrator then writes only what the live blocks' forces read, unless needs_positions_at.
+  virtual bool takes_active_forces() const { return false; }
+  // A sample of an active phase (state at s.t; positions as takes_active_forces says), with the
+  // forces the integrator knows. Called only where takes_active_forces() is true.
+  virtual void sample_active(const Chain& chain, const State& state, const ActiveForces& f) {
+    (void)f;
+    sample(chain, state);
+  }
+  // The same forces' changes, at a sample the observer does not take (a view of a shared
+  // trajectory that has it already): an observer that keeps sums of them follows the changes.
+  virtual void follow_forces(const Chain& chain, const State& state, const ActiveForces& f) {
+    (void)chain, (void)state, (void)f;
   }
   // An observer may end the run early (mu_s-only scenes, interruption).
   virtual bool wants_stop() const { return false; }

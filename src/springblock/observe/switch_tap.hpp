@@ -17,6 +17,9 @@ class SwitchTap final : public Observer {
   }
   void sample(const Chain& c, const State& s) override { main_.sample(c, s); }
   void sample_ringing(const Chain& c, const State& s, RingingForces& f) override { main_.sample_ringing(c, s, f); }
+  bool takes_active_forces() const override { return main_.takes_active_forces(); }
+  void sample_active(const Chain& c, const State& s, const ActiveForces& f) override { main_.sample_active(c, s, f); }
+  void follow_forces(const Chain& c, const State& s, const ActiveForces& f) override { main_.follow_forces(c, s, f); }
   bool wants_stop() const override { return main_.wants_stop(); }
   bool reads_groove_interiors() const override { return main_.reads_groove_interiors(); }
   bool reads_only_friction() const override { return main_.reads_only_friction(); }

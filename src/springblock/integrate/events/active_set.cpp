@@ -33,11 +33,11 @@ ActiveSet::ActiveSet(const Chain& c, RunStore& store, bool settle_grooves, doubl
              kSettleFrac * atol_v,
              t_end},
       modal_(c, store),
-      prev_{std::vector<std::int8_t>(c.N, 0), std::vector<std::uint8_t>(c.N, kStuck)},
+      prev_{std::vector<std::int8_t>(c.N, 0), std::vector<std::uint8_t>(c.N, kStuck), std::vector<std::uint8_t>(c.N, 0), {}},
       kind_(c.N, kStuck),
       store_(store),
       events_(c.N),
-      fresh_{std::vector<std::uint8_t>(c.N, 0), {}} {
+      forces_(c.N) {
   modal_.set_settle_scales(rules_.eps_u, rules_.eps_v);
   runs_.reserve(c.N);
   list_.stepped.reserve(c.N);
@@ -208,13 +208,13 @@ ActiveSet::Run& ActiveSet::seek(std::size_t& cursor, int lo) {
 }
 
 void ActiveSet::set_fresh(BlockRange r) {
-  std::fill(fresh_.block.begin() + r.lo, fresh_.block.begin() + r.hi, 1);
-  fresh_.runs.push_back(r);
+  std::fill(prev_.fresh.begin() + r.lo, prev_.fresh.begin() + r.hi, 1);
+  prev_.fresh_runs.push_back(r);
 }
 
 void ActiveSet::clear_fresh() {
-  for (const BlockRange& r : fresh_.runs) std::fill(fresh_.block.begin() + r.lo, fresh_.block.begin() + r.hi, 0);
-  fresh_.runs.clear();
+  for (const BlockRange& r : prev_.fresh_runs) std::fill(prev_.fresh.begin() + r.lo, prev_.fresh.begin() + r.hi, 0);
+  prev_.fresh_runs.clear();
 }
 
 void ActiveSet::list_stepped(const State& s) {
@@ -250,6 +250,13 @@ void ActiveSet::materialise(double t, double* u, double* v, bool at_sample, bool
   for (const Run& r : runs_)
     if (r.kind == kSettled) store_.write_path(store_.run(r.span.lo), t, u, v, ends_only);
   if (any_modal()) modal_.materialise(t, u, v, at_sample, ends_only);
+}
+
+void ActiveSet::materialise_live(double t, double* u, double* v, bool ends_only) {
+  for (int i : forces_.live_blocks())
+    for (int j : {i - 1, i + 1})
+      if (j >= 0 && j < N() && kind_[j] == kSettled) u[j] = store_.path_u(j, t), v[j] = store_.B(j);
+  if (any_modal()) modal_.materialise(t, u, v, true, ends_only);
 }
 
 void ActiveSet::materialise_near(double t, double* u, double* v, const std::vector<int>& blocks) {

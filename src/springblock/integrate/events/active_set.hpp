@@ -42,6 +42,7 @@
 
 #include "springblock/integrate/block_range.hpp"
 #include "springblock/integrate/events/event_queue.hpp"
+#include "springblock/integrate/events/known_forces.hpp"
 #include "springblock/integrate/linear/modal_runs.hpp"
 #include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
@@ -98,6 +99,14 @@ class ActiveSet {
   // searches use settled_u / modal_u); the loop materialises everything at samples, before a
   // quiet phase and at the end of the run.
   void materialise_near(double t, double* u, double* v, const std::vector<int>& blocks);
+  // Each contact block's friction force as its events were found from it (KnownForces), for a
+  // sample that sums the forces (Observer::sample_active); delivered() once the sample took them.
+  const KnownForces& forces() const { return forces_; }
+  void forces_delivered() { forces_.delivered(); }
+  // For such a sample: the positions the live blocks' forces read, their settled and modal
+  // neighbours' (the modal runs as materialise writes them at a sample; the stepped runs are the
+  // stepper's to write).
+  void materialise_live(double t, double* u, double* v, bool ends_only);
   int modal_runs() const { return modal_.count(); }
   // The settle scales: a grooves-only run's transient below these (in u and v) is dropped.
   double settle_eps_u() const { return rules_.eps_u; }
@@ -140,7 +149,7 @@ class ActiveSet {
   // The kind of run r at s.t, given the previous classification in kind_ and modal_.
   Kind classify(const Run& r, const State& s, const std::uint8_t* touched);
   // Set run r's kind in kind_ (its blocks); a run that becomes modal is registered, projected
-  // afresh (fresh_.block), and a settled one gets its record on its path. The caller drops a modal run
+  // afresh (prev_.fresh), and a settled one gets its record on its path. The caller drops a modal run
   // that stops being one (drop_old).
   void assign(const Chain& c, const State& s, Run& r, Kind kind);
   // Mark run r projected afresh at this classification; forget the marks of the previous one.
@@ -200,10 +209,13 @@ class ActiveSet {
   };
   // s.dir and kind_ at the previous classification. Between classifications they equal s.dir and
   // kind_ (retire_settled keeps kind along), so only the blocks a classification changes differ
-  // while it runs.
+  // while it runs. And the runs projected afresh at this classification: per block, and the runs
+  // (to clear the marks at the next one).
   struct Previous {
     std::vector<std::int8_t> dir;
     std::vector<std::uint8_t> kind;
+    std::vector<std::uint8_t> fresh;
+    std::vector<BlockRange> fresh_runs;
   };
   // What list_stepped finds: the stepped runs, the blocks whose events a step searches, the
   // runs_ indices of stepped grooves-only runs, the earliest time a short run is due promotion.
@@ -221,12 +233,6 @@ class ActiveSet {
     // (its block no longer starts a modal run with that time) and is skipped.
     std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> settling;
     double next_promotion = std::numeric_limits<double>::infinity();
-  };
-  // The runs projected afresh at this classification: per block, and the runs (to clear the
-  // marks at the next one).
-  struct Fresh {
-    std::vector<std::uint8_t> block;
-    std::vector<BlockRange> runs;
   };
   // update()'s work lists.
   struct Work {
@@ -250,7 +256,7 @@ class ActiveSet {
   Listing list_;
   RunStore& store_;    // the settled and modal runs' records
   EventQueue events_;  // per contact block: next closed-form or modal event (inf if none / watched)
-  Fresh fresh_;
+  KnownForces forces_;  // per contact block: its force as the events were found from it
   Work work_;
 };
 

@@ -20,10 +20,11 @@ void ActiveSet::update_events(const Chain& c, const State& s, const std::uint8_t
     collect_candidates(s, touched);
   }
   for (int i : work_.cand) {
+    if (c.contact[i] && s.dir[i] != 0) forces_.sliding(i, s.dir[i] * c.f_kinetic[i]);
     if (!c.contact[i] || (s.dir[i] != 0 && kind_[i] != kModal)) {
       events_.set(i, kInf, false);
     } else if (s.dir[i] != 0) {
-      if (fresh_.block[i]) events_.set(i, kInf, false), work_.pending.push_back(i);
+      if (prev_.fresh[i]) events_.set(i, kInf, false), work_.pending.push_back(i);
     } else {
       // A stuck block keeps its event time unless something next to it changed: it does not
       // move, nor do its stuck neighbours, and a settled or kept modal neighbour follows the
@@ -31,7 +32,7 @@ void ActiveSet::update_events(const Chain& c, const State& s, const std::uint8_t
       bool changed = all || switched(s, touched, i) || switched(s, touched, i - 1) ||
                      switched(s, touched, i + 1) || prev_.kind[i] != kStuck;
       for (int j : {i - 1, i + 1})
-        if (j >= 0 && j < N()) changed = changed || kind_[j] != prev_.kind[j] || fresh_.block[j];
+        if (j >= 0 && j < N()) changed = changed || kind_[j] != prev_.kind[j] || prev_.fresh[j];
       if (changed && !refresh_stuck(c, s, i)) work_.pending.push_back(i);
     }
   }
@@ -50,10 +51,12 @@ bool ActiveSet::refresh_stuck(const Chain& c, const State& s, int i) {
     for (int j : {i - 1, i + 1})
       if (j >= 0 && j < N() && kind_[j] == kStepped) {
         events_.set(i, kInf, false);  // watched: the step's dense output finds its crossing
+        forces_.live(i);
         return true;
       }
   if (beside_modal(i)) {
     events_.set(i, kInf, false);  // searched by finish_events
+    forces_.live(i);
     return false;
   }
   update_crossing(c, s, i);
@@ -63,7 +66,7 @@ bool ActiveSet::refresh_stuck(const Chain& c, const State& s, int i) {
 void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit) {
   ModalRuns::Found f;
   if (s.dir[i] != 0) {
-    f = modal_.stop_time(c, s, i, fresh_.block[i] != 0, limit);
+    f = modal_.stop_time(c, s, i, prev_.fresh[i] != 0, limit);
   } else {
     double base[2] = {0, 0}, nb_B[2] = {0, 0};
     for (int side = 0; side < 2; ++side) {
@@ -93,7 +96,7 @@ void ActiveSet::finish_events(const Chain& c, const State& s) {
 void ActiveSet::recheck(const Chain& c, const State& s) {
   const int i = events_.next().block;
   events_.set(i, kInf, false);
-  fresh_.block[i] = 0;
+  prev_.fresh[i] = 0;
   work_.pending.assign(1, i);
   finish_events(c, s);
 }
@@ -105,6 +108,7 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
       if (j < 0 || j >= N()) continue;
       if (kind_[j] == kStepped) {  // watched instead: its force is not affine
         events_.set(i, kInf, false);
+        forces_.live(i);
         return;
       }
       const double k_ij = c.spring_between(i, j);
@@ -116,6 +120,7 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
       }
     }
   }
+  forces_.affine(i, a - b * s.t, b);  // a + b tau with tau = t - s.t
   // First time a + b tau reaches +-f_static. b = 0 (nothing loads it) never crosses.
   const double f = c.f_static[i];
   if (b == 0.0) {
@@ -160,7 +165,7 @@ bool ActiveSet::promote_runs(const Chain& c, const State& s) {
     Run& r = seek(cursor, lo);
     if (r.kind != kStepped || r.grooves || r.span.hi - r.span.lo > rules_.modal_max || s.t < r.formed + rules_.promote_age)
       continue;
-    // As a classification would treat a run that becomes modal: projected afresh (fresh_.block), its
+    // As a classification would treat a run that becomes modal: projected afresh (prev_.fresh), its
     // sliding blocks' stops and its stuck neighbours' crossings searched anew.
     assign(c, s, r, kModal);
     std::fill(prev_.kind.begin() + r.span.lo, prev_.kind.begin() + r.span.hi, kModal);

@@ -119,7 +119,7 @@ void ActiveSet::collect_candidates(const State& s, const std::uint8_t* touched) 
   int last = -1;
   auto visit = [&](BlockRange r) {
     for (int i = r.lo; i < r.hi; ++i) {
-      if (s.dir[i] == prev_.dir[i] && kind_[i] == prev_.kind[i] && !fresh_.block[i] && !touched[i]) continue;
+      if (s.dir[i] == prev_.dir[i] && kind_[i] == prev_.kind[i] && !prev_.fresh[i] && !touched[i]) continue;
       for (int j = std::max(i - 1, last + 1); j <= std::min(i + 1, N() - 1); ++j) work_.cand.push_back(j), last = j;
     }
   };

@@ -31,6 +31,9 @@ struct EventOptions {
   // friction forces only the exact stepper's end rows.
   bool ends_only = false;
   bool friction_only = false;
+  // The observer sums the contact forces from what the active set knows of them at the samples of
+  // an active phase (Observer::takes_active_forces): only the live blocks' neighbours are written.
+  bool active_forces = false;
 };
 
 // When the stepped runs changed, and which blocks switched since. Every change to the stepped
@@ -115,8 +118,17 @@ void EventCore::sample_if_due(Write&& write_runs) {
   WorkTimer timer(s.work, s.work.sampling_s);
   ++s.work.samples;
   write_runs();
-  active.materialise(s.t, s.u.data(), s.v.data(), true, opt.ends_only);
-  obs.sample(c, s);
+  if (!opt.active_forces) {
+    active.materialise(s.t, s.u.data(), s.v.data(), true, opt.ends_only);
+    obs.sample(c, s);
+  } else {
+    // The forces known at the sample serve it whether or not the positions are written too, so a
+    // sample's value does not depend on whether some observer needs the positions there.
+    if (obs.needs_positions_at(s.t)) active.materialise(s.t, s.u.data(), s.v.data(), true, opt.ends_only);
+    else active.materialise_live(s.t, s.u.data(), s.v.data(), opt.ends_only);
+    obs.sample_active(c, s, active.forces().view());
+    active.forces_delivered();
+  }
   clock.advance();
 }
 

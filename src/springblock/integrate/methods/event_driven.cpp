@@ -21,7 +21,8 @@ void EventDriven::run(const Chain& c, State& s, double t_end, double sample_dt, 
                                        exact_max_run_,
                                        switch_log_,
                                        !obs.reads_groove_interiors(),
-                                       obs.reads_only_friction()};
+                                       obs.reads_only_friction(),
+                                       fast_forward_ && obs.takes_active_forces()};
   event_detail::EventRun run(c, s, t_end, sample_dt, obs, opt);
   if (e.coupled && e.damped) run.run<true, true>();
   else if (e.coupled) run.run<true, false>();
