@@ -72,8 +72,12 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
   std::fill(kind_.begin() + region.lo, kind_.begin() + region.hi, kStuck);
   untrack(region.lo, region.hi);
   for (Run& r : work_.found) assign(c, s, r, r.kind);
-  const auto at = runs_.erase(first, last);
-  runs_.insert(at, work_.found.begin(), work_.found.end());
+  // The runs after the region move only when their number in it changed (a memmove of the rest
+  // of the chain's runs per switch otherwise).
+  const std::size_t old_n = static_cast<std::size_t>(last - first), new_n = work_.found.size();
+  const auto kept = std::copy(work_.found.begin(), work_.found.begin() + std::min(old_n, new_n), first);
+  if (new_n < old_n) runs_.erase(kept, last);
+  else runs_.insert(kept, work_.found.begin() + old_n, work_.found.end());
 }
 
 // Outside the regions only a grooves-only run that is modal or ringing can change kind, with time.
