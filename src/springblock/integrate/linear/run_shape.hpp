@@ -138,8 +138,8 @@ class RunShapes {
   static double step_for(const Chain& c);
 
  private:
-  RunShape make(int n, bool left, bool right) const;
-  RunShape make_general(BlockRange r) const;
+  // The shape of run r, held at the ends the flags say (the general case's are r's own).
+  RunShape make(BlockRange r, bool left, bool right) const;
   std::vector<double> general_key(BlockRange r) const;
   static void finish_modes(RunShape& sh, double mass, double gamma);
   void add_parts(RunShape& sh, std::uint8_t parts) const;
