@@ -138,7 +138,8 @@ class RunShapes {
   static double step_for(const Chain& c);
 
  private:
-  // The shape of run r, held at the ends the flags say (the general case's are r's own).
+  // The shape of run r, a stuck block holding its left and right ends as the flags say (on a
+  // uniform chain r stands for every run of its length and ends).
   RunShape make(BlockRange r, bool left, bool right) const;
   std::vector<double> general_key(BlockRange r) const;
   static void finish_modes(RunShape& sh, double mass, double gamma);
