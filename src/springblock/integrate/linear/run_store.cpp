@@ -184,21 +184,27 @@ double RunStore::row_a(int i, const double* q, const double* p) const {
 void RunStore::write(const Run& r, double t, const double* q, const double* p, double* u, double* v, bool ends_only,
                      const double* du, const double* dv) {
   const int n = r.n(), lo = r.lo;
-  // Row k's modal parts into (x, y): by the row itself on short runs (row_dot), from
-  // columns_times on long ones (the same doubles).
+  const RunShape& sh = *r.shape;
+  // Row k's modal parts into (x, y): by the row itself on short runs (row_dot's sums, both in one
+  // pass), from columns_times on long ones (the same doubles).
   auto put = [&](int k, double x, double y) {
     const int i = lo + k;
     u[i] = path_u(i, t) + x;
     v[i] = B_[i] + y;
     if (du != nullptr) u[i] += du[i], v[i] += dv[i];
   };
-  auto by_row = [&](int k) { put(k, row_dot(lo + k, q), row_dot(lo + k, p)); };
+  auto by_row = [&](int k) {
+    const double* row = sh.row(k);
+    double x = 0, y = 0;
+    for (int j = 0; j < n; ++j) x += row[j] * q[lo + j], y += row[j] * p[lo + j];
+    put(k, x, y);
+  };
   if (ends_only && n > 2) {
     by_row(0), by_row(n - 1);
   } else if (n <= kRowWise) {
     for (int k = 0; k < n; ++k) by_row(k);
   } else {
-    columns_times(n, r.shape->Q.data(), q + lo, p + lo, sums_.q.data(), sums_.p.data());
+    columns_times(n, sh.Q.data(), q + lo, p + lo, sums_.q.data(), sums_.p.data());
     for (int k = 0; k < n; ++k) put(k, sums_.q[k], sums_.p[k]);
   }
 }
