@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "springblock/integrate/numerics/estrin.hpp"
+#include "springblock/kernel_clones.hpp"
 
 namespace sb::event_detail {
 
@@ -80,6 +81,19 @@ inline void mode_sincos(double x, double& sin_x, double& cos_x) {
 // The state transition of a mode over a fixed interval dt, row-major:
 //   (q, q')(tau + dt) = [[P0, P1], [P2, P3]] (q, q')(tau).
 using Transition = std::array<double, 4>;
+
+// Modes [0, n) moved on by their transitions, given element by element (p00[k] is mode k's P0):
+// (qn, pn) = P (q, p). Element-wise, so it vectorises; the exact stepper's grid step and
+// EdgeMarch's keep their transitions in these four arrays for it.
+SB_KERNEL_CLONES inline void step_modes(int n, const double* __restrict p00, const double* __restrict p01,
+                                        const double* __restrict p10, const double* __restrict p11,
+                                        const double* __restrict q, const double* __restrict p,
+                                        double* __restrict qn, double* __restrict pn) {
+  for (int k = 0; k < n; ++k) {
+    qn[k] = p00[k] * q[k] + p01[k] * p[k];
+    pn[k] = p10[k] * q[k] + p11[k] * p[k];
+  }
+}
 
 struct DampedMode {
   double alpha = 0;   // gamma / 2 [1/s]

@@ -1,6 +1,5 @@
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/numerics/infinity.hpp"
-#include "springblock/kernel_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,14 +56,12 @@ double EdgeMarch::affine_reach(double a, double b, double fs) const {
 void EdgeMarch::finish() {
   double omega_max = 0;
   for (const Mode& m : sum_.modes) omega_max = std::max(omega_max, m.mode.omega);
-  H_ = kGrid / omega_max;
+  const double H = grid_step(omega_max);
   for (std::size_t k = 0; k < sum_.modes.size(); ++k) {
-    sum_.modes[k].mode.eval(1.0, 0.0, H_, sum_.p00[k], sum_.p10[k]);
-    sum_.modes[k].mode.eval(0.0, 1.0, H_, sum_.p01[k], sum_.p11[k]);
+    const Transition P = sum_.modes[k].mode.transition(H);
+    sum_.p00[k] = P[0], sum_.p01[k] = P[1], sum_.p10[k] = P[2], sum_.p11[k] = P[3];
   }
-  for (auto* v : {&now_.q, &now_.p, &next_.q, &next_.p, &scratch_.q, &scratch_.p}) v->assign(sum_.modes.size(), 0.0);
-  poly_.ok = true;
-  for (const Mode& m : sum_.modes) poly_.ok = poly_.ok && m.rate * H_ <= kTaylorReach;
+  finish(H);
 }
 
 void EdgeMarch::direct(const double* q0, const double* p0, double tau, double* q, double* qd) {
@@ -75,22 +72,9 @@ void EdgeMarch::direct(const double* q0, const double* p0, double tau, double* q
       });
 }
 
-namespace {
-// Every mode advanced by its transition over H: element-wise, so it vectorises (restrict).
-SB_KERNEL_CLONES void transition(int n, const double* __restrict p00, const double* __restrict p01,
-                                 const double* __restrict p10, const double* __restrict p11,
-                                 const double* __restrict q, const double* __restrict qd, double* __restrict qn,
-                                 double* __restrict qdn) {
-  for (int k = 0; k < n; ++k) {
-    qn[k] = p00[k] * q[k] + p01[k] * qd[k];
-    qdn[k] = p10[k] * q[k] + p11[k] * qd[k];
-  }
-}
-}  // namespace
-
 void EdgeMarch::grid_step() {
-  transition(static_cast<int>(sum_.modes.size()), sum_.p00.data(), sum_.p01.data(), sum_.p10.data(), sum_.p11.data(), now_.q.data(),
-             now_.p.data(), next_.q.data(), next_.p.data());
+  step_modes(static_cast<int>(sum_.modes.size()), sum_.p00.data(), sum_.p01.data(), sum_.p10.data(), sum_.p11.data(),
+             now_.q.data(), now_.p.data(), next_.q.data(), next_.p.data());
 }
 
 // The modes' weighted sum, sum_k w_k x_k, in four lanes (mode k in lane k % 4, the lanes added

@@ -71,7 +71,6 @@ class EdgeMarch {
 
   // a, b: affine part of F at the start of the quiet phase; fs: the threshold.
   void set_affine(double a, double b) { gap_.a = a, gap_.b = b; }
-  double a() const { return gap_.a; }
 
   // A cheap lower bound on the first crossing (for ordering the searches).
   double lower_bound(const double* q0, const double* p0, double fs);

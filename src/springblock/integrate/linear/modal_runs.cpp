@@ -45,14 +45,6 @@ void ModalRuns::drop(int lo) {
   runs_.pop_back();
 }
 
-void ModalRuns::clear() {
-  for (const Run& r : runs_) {
-    for (int i = r.lo; i < r.hi; ++i) run_of_[i] = -1;
-    if (store_.owner(r.lo) == RunStore::kModal) store_.drop(r.lo);
-  }
-  runs_.clear();
-}
-
 void ModalRuns::scratch_at(Run& r, double t) {
   if (r.scratch_t == t) return;
   store_.coords(record(r), t, scratch_.q.data(), scratch_.p.data());

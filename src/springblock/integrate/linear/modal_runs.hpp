@@ -42,7 +42,9 @@ class ModalRuns {
   // The run starting at block lo is no longer modal (its record leaves the store).
   void drop(int lo);
   // No run is modal.
-  void clear();
+  void clear() {
+    while (!runs_.empty()) drop(runs_.back().lo);
+  }
   // Transients below these (in u and v, every row) count as gone: see settled_after().
   void set_settle_scales(double eps_u, double eps_v) { settle_ = {eps_u, eps_v}; }
   // For the run holding block i: a time after which its deviation from the affine path is

@@ -41,42 +41,33 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
   // while something slides) without a crossing; when the envelope already says so, the search
   // waits until then with no march set up and no mode evaluated, and goes on from where the
   // envelope allows.
-  {
-    double a = c.k_s(j) * (c.v_slider * s.t - s.u[j]), b = c.k_s(j) * c.v_slider, spread = 0;
-    for (int side = 0; side < 2; ++side) {
-      const int nb = side == 0 ? j - 1 : j + 1;
-      if (nb < 0 || nb >= static_cast<int>(run_of_.size())) continue;
-      const double k = c.spring_between(j, nb);
-      if (run_of_[nb] < 0) {
-        a += k * (base[side] - s.u[j]), b += k * nb_B[side];
-        continue;
-      }
-      a += k * (store_.path_u(nb, s.t) - s.u[j]), b += k * store_.B(nb), spread += k * amplitude(nb);
-    }
-    const double room = c.f_static[j] - spread;
-    if (std::fabs(a) < room) {
-      const double reach = b > 0 ? (room - a) / b : b < 0 ? (room + a) / -b : kInf;
-      if (!(s.t + reach < t_limit)) return {kInf, std::isfinite(reach), s.t + reach};
-    }
-  }
-  march_.reset();
-  double a = c.k_s(j) * (c.v_slider * s.t - s.u[j]), b = c.k_s(j) * c.v_slider;
+  double a = c.k_s(j) * (c.v_slider * s.t - s.u[j]), b = c.k_s(j) * c.v_slider, spread = 0;
   for (int side = 0; side < 2; ++side) {
     const int nb = side == 0 ? j - 1 : j + 1;
     if (nb < 0 || nb >= static_cast<int>(run_of_.size())) continue;
-    const double k_nb = c.spring_between(j, nb);
+    const double k = c.spring_between(j, nb);
     if (run_of_[nb] < 0) {
-      a += k_nb * (base[side] - s.u[j]);
-      b += k_nb * nb_B[side];
+      a += k * (base[side] - s.u[j]), b += k * nb_B[side];
       continue;
     }
+    a += k * (store_.path_u(nb, s.t) - s.u[j]), b += k * store_.B(nb), spread += k * amplitude(nb);
+  }
+  const double room = c.f_static[j] - spread;
+  if (std::fabs(a) < room) {
+    const double reach = b > 0 ? (room - a) / b : b < 0 ? (room + a) / -b : kInf;
+    if (!(s.t + reach < t_limit)) return {kInf, std::isfinite(reach), s.t + reach};
+  }
+  // Then the march on F = a + b tau plus the modal sides' modes.
+  march_.reset();
+  for (int side = 0; side < 2; ++side) {
+    const int nb = side == 0 ? j - 1 : j + 1;
+    if (nb < 0 || nb >= static_cast<int>(run_of_.size()) || run_of_[nb] < 0) continue;
+    const double k_nb = c.spring_between(j, nb);
     Run& r = runs_[run_of_[nb]];
     const RunShape& sh = *record(r).shape;
     const double* row = sh.row(nb - r.lo);
     // The run's coordinates at s.t (its own origin may be older: it was kept across switches).
     scratch_at(r, s.t);
-    a += k_nb * (store_.path_u(nb, s.t) - s.u[j]);
-    b += k_nb * store_.B(nb);
     for (int k = 0; k < r.hi - r.lo; ++k) march_.add_mode(k_nb * row[k], sh.modes[k], r.lo + k, sh.steps.march[k].data());
   }
   march_.finish(store_.shapes().march_step());

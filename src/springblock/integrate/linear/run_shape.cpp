@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "springblock/integrate/linear/edge_march.hpp"
+#include "springblock/integrate/linear/general_modes.hpp"
 
 namespace sb::event_detail {
 namespace {
@@ -51,27 +52,6 @@ void closed_form_modes(double K_s, double K_int, int n, bool left, bool right, E
   }
 }
 
-// The same, kept per thread: every repetition of a scene asks for the same shapes (their cosines
-// are most of a projection's cost on the first call), and the closed form is the same doubles
-// whoever computes it, so results do not depend on the thread count.
-void cached_modes(double K_s, double K_int, int n, bool left, bool right, Eigen::MatrixXd& Q,
-                  std::vector<double>& lambda) {
-  struct Modes {
-    Eigen::MatrixXd Q;
-    std::vector<double> lambda;
-  };
-  thread_local std::map<std::tuple<double, double, int, bool, bool>, Modes> cache;
-  const auto key = std::make_tuple(K_s, K_int, n, left, right);
-  auto it = cache.find(key);
-  if (it == cache.end()) {
-    Modes m;
-    closed_form_modes(K_s, K_int, n, left, right, m.Q, m.lambda);
-    it = cache.emplace(key, std::move(m)).first;
-  }
-  Q = it->second.Q;
-  lambda = it->second.lambda;
-}
-
 }  // namespace
 
 void Factors::factor() {
@@ -115,31 +95,52 @@ RunShapes::RunShapes(const Chain& c)
 const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts) {
   const std::size_t slot = 4 * static_cast<std::size_t>(n) + 2 * left + right;
   if (slot >= index_.size()) index_.resize(slot + 1, nullptr);
-  if (index_[slot] == nullptr) index_[slot] = &shapes_.emplace(std::make_tuple(n, left, right), make(n, left, right)).first->second;
+  if (index_[slot] == nullptr) index_[slot] = &shapes_.emplace(std::make_tuple(n, left, right), make({0, n}, left, right)).first->second;
   RunShape& sh = *index_[slot];
   if ((sh.steps.parts & parts) != parts) add_parts(sh, parts);
   return sh;
 }
 
-RunShape RunShapes::make(int n, bool left, bool right) const {
-  const double K_s = c_.K_s, K_int = c_.K_int, mass = c_.m, gamma = c_.gamma;
+// K: each block's slider spring plus the springs to the neighbours that exist (inside the run,
+// or the stuck block holding an end), minus those springs beside the diagonal. The path: K B =
+// (K_s,i v), a0 = K^-1 (-m_i gamma B_i), gL and gR = K^-1 of the holding springs at the ends. The
+// modes: the closed form on a chain of identical blocks (r then stands for every run of its
+// length and ends), the general solver on one whose blocks differ.
+RunShape RunShapes::make(BlockRange r, bool left, bool right) const {
+  const Chain& c = c_;
+  const int n = r.size(), lo = r.lo;
   RunShape sh;
   sh.n = n, sh.path.left = left, sh.path.right = right;
   Factors& K = sh.K;
-  for (int k = 0; k < n; ++k) K.diag.push_back(K_s + ((k > 0 || left) ? K_int : 0.0) + ((k + 1 < n || right) ? K_int : 0.0));
-  K.off.assign(std::max(n - 1, 0), -K_int);
+  for (int k = 0; k < n; ++k) {
+    const int i = lo + k;
+    K.diag.push_back(c.k_s(i) + ((k > 0 || left) ? c.spring(i - 1) : 0.0) + ((k + 1 < n || right) ? c.spring(i) : 0.0));
+    if (k + 1 < n) K.off.push_back(-c.spring(i));
+  }
   K.factor();
-  // The affine path's pieces, each K^-1 of its forcing.
   AffinePieces& path = sh.path;
-  path.B.assign(n, K_s * c_.v_slider);
+  path.B.resize(n);
+  for (int k = 0; k < n; ++k) path.B[k] = c.k_s(lo + k) * c.v_slider;
   K.solve(path.B.data(), path.B.data());
   path.a0.resize(n), path.gL.assign(n, 0.0), path.gR.assign(n, 0.0);
-  for (int k = 0; k < n; ++k) path.a0[k] = -mass * gamma * path.B[k];
+  for (int k = 0; k < n; ++k) path.a0[k] = -c.mass(lo + k) * c.gamma * path.B[k];
   K.solve(path.a0.data(), path.a0.data());
-  if (left) path.gL[0] = K_int, K.solve(path.gL.data(), path.gL.data());
-  if (right) path.gR[n - 1] = K_int, K.solve(path.gR.data(), path.gR.data());
-  cached_modes(K_s, K_int, n, left, right, sh.Q, sh.spectrum.lambda);
-  finish_modes(sh, mass, gamma);
+  if (left) path.gL[0] = c.spring(lo - 1), K.solve(path.gL.data(), path.gL.data());
+  if (right) path.gR[n - 1] = c.spring(r.hi - 1), K.solve(path.gR.data(), path.gR.data());
+  if (c.uniform()) {
+    cached_modes(std::make_tuple(c.K_s, c.K_int, n, left, right),
+                 [&](auto& Q, auto& lambda) { closed_form_modes(c.K_s, c.K_int, n, left, right, Q, lambda); }, sh.Q,
+                 sh.spectrum.lambda);
+  } else {
+    sh.weight.resize(n);
+    for (int k = 0; k < n; ++k) sh.weight[k] = c.mass(lo + k) / c.m;
+    std::vector<double> key(K.diag);  // every value general_modes reads
+    key.insert(key.end(), K.off.begin(), K.off.end());
+    key.insert(key.end(), sh.weight.begin(), sh.weight.end());
+    cached_modes(std::move(key), [&](auto& Q, auto& lambda) { general_modes(K, sh.weight, Q, lambda); }, sh.Q,
+                 sh.spectrum.lambda);
+  }
+  finish_modes(sh, c.m, c.gamma);
   return sh;
 }
 

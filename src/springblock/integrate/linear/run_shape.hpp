@@ -138,8 +138,9 @@ class RunShapes {
   static double step_for(const Chain& c);
 
  private:
-  RunShape make(int n, bool left, bool right) const;
-  RunShape make_general(BlockRange r) const;
+  // The shape of run r, a stuck block holding its left and right ends as the flags say (on a
+  // uniform chain r stands for every run of its length and ends).
+  RunShape make(BlockRange r, bool left, bool right) const;
   std::vector<double> general_key(BlockRange r) const;
   static void finish_modes(RunShape& sh, double mass, double gamma);
   void add_parts(RunShape& sh, std::uint8_t parts) const;

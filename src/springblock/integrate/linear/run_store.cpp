@@ -185,8 +185,8 @@ void RunStore::write(const Run& r, double t, const double* q, const double* p, d
                      const double* du, const double* dv) {
   const int n = r.n(), lo = r.lo;
   const RunShape& sh = *r.shape;
-  // Row k's modal parts into (x, y): by the row itself on short runs (row_dot's sums), from
-  // columns_times on long ones (the same doubles).
+  // Row k's modal parts into (x, y): by the row itself on short runs (row_dot's sums, both in one
+  // pass), from columns_times on long ones (the same doubles).
   auto put = [&](int k, double x, double y) {
     const int i = lo + k;
     u[i] = path_u(i, t) + x;

@@ -3,25 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "springblock/kernel_clones.hpp"
-
 namespace sb::event_detail {
 namespace {
 
 // Grid steps between restarts of the recurrence from the closed form (its round-off grows by a
 // few ulp of the modes per step).
 constexpr int kSpanResync = 256;
-
-// Every mode of a run advanced by its transition over H: element-wise, so it vectorises.
-SB_KERNEL_CLONES void grid_transition(int n, const double* __restrict p00, const double* __restrict p01,
-                                      const double* __restrict p10, const double* __restrict p11,
-                                      const double* __restrict q, const double* __restrict p,
-                                      double* __restrict qn, double* __restrict pn) {
-  for (int k = 0; k < n; ++k) {
-    qn[k] = p00[k] * q[k] + p01[k] * p[k];
-    pn[k] = p10[k] * q[k] + p11[k] * p[k];
-  }
-}
 
 }  // namespace
 
@@ -90,8 +77,8 @@ void SpanModes::advance(double h) {
     const RunStore::Run& rec = store_.run(sp.lo);
     const RunShape& sh = *rec.shape;
     if (h == H_ && sp.since + 1 < kSpanResync) {
-      grid_transition(sh.n, sh.steps.p00.data(), sh.steps.p01.data(), sh.steps.p10.data(), sh.steps.p11.data(), q + sp.lo, p + sp.lo,
-                      qn + sp.lo, pn + sp.lo);
+      step_modes(sh.n, sh.steps.p00.data(), sh.steps.p01.data(), sh.steps.p10.data(), sh.steps.p11.data(), q + sp.lo,
+                 p + sp.lo, qn + sp.lo, pn + sp.lo);
       ++sp.since;
     } else {
       // A step off the grid, or the restart: from the projection itself when it is due.

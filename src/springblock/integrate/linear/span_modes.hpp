@@ -87,7 +87,8 @@ class SpanModes {
 
   const std::vector<BlockRange>& spans() const { return ranges_; }
   // A grooves-only run (index in spans()) has rung down below the scales after this time
-  // (+inf without damping), from its modes at the projection (envelope.hpp).
+  // (+inf without damping, or for a run holding a contact block), from its modes at the
+  // projection (envelope.hpp).
   double settled_after(int k, double eps_u, double eps_v) const;
 
  private:
@@ -105,7 +106,7 @@ class SpanModes {
     const RunStore::Run* r = store_.exact({sp.lo, sp.hi});
     return r != nullptr && r->id == sp.id ? r : nullptr;
   }
-  void write_rows(const Span& sp, double* u, double* v);
+  void write_rows(const Span& sp, double* u, double* v, bool ends_only = false);
   const Moment& at(bool end) const { return end ? end_ : now_; }
 
   double H_;

@@ -3,6 +3,7 @@
 #include "springblock/integrate/linear/span_modes.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace sb::event_detail {
 
@@ -13,22 +14,13 @@ void SpanModes::row_taylor(int i, double* c) const {
 }
 
 void SpanModes::write(double* u, double* v, bool ends_only) {
-  for (const Span& sp : spans_) {
-    if (mine(sp) == nullptr) continue;
-    if (!ends_only || sp.hi - sp.lo <= 2) {
-      write_rows(sp, u, v);
-      continue;
-    }
-    for (int i : {sp.lo, sp.hi - 1}) {
-      u[i] = store_.row_u(i, now_.t, now_.x.q.data()) + du_[i];
-      v[i] = store_.row_v(i, now_.x.p.data()) + dv_[i];
-    }
-  }
+  for (const Span& sp : spans_)
+    if (mine(sp) != nullptr) write_rows(sp, u, v, ends_only);
 }
 
-// Every row of a run (RunStore::write), with its offset.
-void SpanModes::write_rows(const Span& sp, double* u, double* v) {
-  store_.write(store_.run(sp.lo), now_.t, now_.x.q.data(), now_.x.p.data(), u, v, false, du_.data(), dv_.data());
+// Every row of a run, or its end rows (RunStore::write), with their offsets.
+void SpanModes::write_rows(const Span& sp, double* u, double* v, bool ends_only) {
+  store_.write(store_.run(sp.lo), now_.t, now_.x.q.data(), now_.x.p.data(), u, v, ends_only, du_.data(), dv_.data());
 }
 
 void SpanModes::write_near(const std::vector<int>& blocks, double* u, double* v) {
@@ -49,6 +41,7 @@ void SpanModes::write_untouched(const std::int64_t* switched_at, std::int64_t si
 }
 
 double SpanModes::settled_after(int k, double eps_u, double eps_v) const {
+  if (!spans_[k].grooves) return std::numeric_limits<double>::infinity();
   const RunStore::Run& rec = store_.run(spans_[k].lo);
   return rec.t0 + store_.envelope(rec).time_below(eps_u, eps_v);
 }

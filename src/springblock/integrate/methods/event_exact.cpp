@@ -15,14 +15,8 @@ void ExactEvolve::project() {
   projected_at_ = valid_at_ = core_.epochs.now();
   screen_.rebuild(core_.c, s, spans_, core_.active);
   settle_ = kInf;
-  const auto& runs = spans_.spans();
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    bool grooves = true;
-    for (int i = runs[k].lo; i < runs[k].hi && grooves; ++i) grooves = !core_.c.contact[i];
-    if (grooves)
-      settle_ = std::min(settle_, spans_.settled_after(static_cast<int>(k), core_.active.settle_eps_u(),
-                                                       core_.active.settle_eps_v()));
-  }
+  for (int k = 0; k < static_cast<int>(spans_.spans().size()); ++k)
+    settle_ = std::min(settle_, spans_.settled_after(k, core_.active.settle_eps_u(), core_.active.settle_eps_v()));
 }
 
 void ExactEvolve::leave() {

@@ -64,26 +64,19 @@ bool QuietEvolve::serve_samples(double t_next) {
   affine_ready_ = false;
   long long next_offer = core_.clock.index();  // a declined stretch is not offered again sample by sample
   while (core_.clock.next() < t_next) {
-    if (core_.clock.next() >= dead_after) {
-      bool stopped = false;
-      if (sample_affine_stretch(t_next, stopped)) {
-        if (stopped) return false;
-        continue;
-      }
-    }
     bool stopped = false;
+    if (core_.clock.next() >= dead_after && sample_affine_stretch(t_next, stopped)) {
+      if (stopped) return false;
+      continue;
+    }
     if (core_.opt.ends_only && core_.clock.index() >= next_offer && offer_block(std::min(t_next, dead_after), stopped, next_offer)) {
       if (stopped) return false;
       continue;
     }
     sample_.t = core_.clock.next();
     serve_sample();
-    core_.clock.advance();
-    if (core_.obs.wants_stop()) {
-      quiet_.evaluate(sample_.t, core_.s.u.data(), core_.s.v.data());
-      core_.s.t = sample_.t;
-      return false;
-    }
+    took_samples(1, stopped);
+    if (stopped) return false;
   }
   return true;
 }
@@ -101,8 +94,8 @@ void QuietEvolve::serve_sample() {
   else core_.obs.sample(core_.c, sample_);
 }
 
-// The clock past `used` samples an observer took at once; if it then wants to stop, the state is
-// brought to the last of them.
+// The clock past `used` samples (one served, or those an observer took at once); if it then wants
+// to stop, the state is brought to the last of them.
 void QuietEvolve::took_samples(long used, bool& stopped) {
   core_.clock.advance(used);
   if (core_.obs.wants_stop()) {

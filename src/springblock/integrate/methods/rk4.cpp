@@ -46,15 +46,11 @@ SB_INLINE void rk4_stage(int N, const double* __restrict u, const double* __rest
   }
 }
 
-// The accelerations of the whole chain: the uniform chain's kernel, or (PerBlock) the one that
-// reads each block's springs and mass.
+// The accelerations of the whole chain (PerBlock: from each block's springs and mass).
 template <bool Coupled, bool Damped, bool PerBlock>
 SB_INLINE void chain_accel(const Chain& c, const double* __restrict u, const double* __restrict v, double t,
                            const Workspace& w, double* __restrict a) {
-  if constexpr (PerBlock)
-    event_detail::chain_accel_per_block<Coupled, Damped>(c, 0, c.N, u, v, t, w.mobile.data(), w.f_kin.data(), a);
-  else
-    event_detail::chain_accel<Coupled, Damped>(c, 0, c.N, u, v, t, w.mobile.data(), w.f_kin.data(), a);
+  event_detail::chain_accel<Coupled, Damped, PerBlock>(c, 0, c.N, u, v, t, w.mobile.data(), w.f_kin.data(), a);
 }
 
 template <bool Coupled, bool Damped, bool PerBlock>

@@ -11,38 +11,27 @@
 
 namespace sb::event_detail {
 
-template <bool Coupled, bool Damped>
+// PerBlock: a chain whose blocks differ in slider spring, mass or internal springs, each block's
+// force over its own mass; otherwise the uniform chain's coefficients and one mass.
+template <bool Coupled, bool Damped, bool PerBlock>
 SB_INLINE void chain_accel(const Chain& c, int lo, int hi, const double* __restrict u, const double* __restrict v,
-                        double t, const double* __restrict mobile, const double* __restrict f_kin,
-                        double* __restrict a) {
+                           double t, const double* __restrict mobile, const double* __restrict f_kin,
+                           double* __restrict a) {
   const int N = c.N;
-  const ForceCoefficients k = c.force_coefficients();
-  const double inv_m = 1.0 / c.m, slider = c.v_slider * t;
+  const auto k = [&c] {
+    if constexpr (PerBlock) return c.block_force_coefficients();
+    else return c.force_coefficients();
+  }();
+  const double* __restrict inv_m = c.blocks.inv_m.data();  // PerBlock only
+  const double inv_m0 = 1.0 / c.m, slider = c.v_slider * t;
   auto one = [&](int i) {  // with the end checks
-    a[i] = mobile[i] * inv_m * force_checked<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
+    a[i] = mobile[i] * (PerBlock ? inv_m[i] : inv_m0) * force_checked<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
   };
   int first = lo, last = hi;
   if (first == 0 && first < last) one(first++);
   if (last == N && first < last) one(--last);
-  for (int i = first; i < last; ++i) a[i] = mobile[i] * inv_m * force_interior<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
-}
-
-// The same for a chain whose blocks differ in slider spring, mass or internal springs: each
-// block's force over its own mass.
-template <bool Coupled, bool Damped>
-SB_INLINE void chain_accel_per_block(const Chain& c, int lo, int hi, const double* __restrict u,
-                                     const double* __restrict v, double t, const double* __restrict mobile,
-                                     const double* __restrict f_kin, double* __restrict a) {
-  const int N = c.N;
-  const BlockForceCoefficients k = c.block_force_coefficients();
-  const double* __restrict inv_m = c.blocks.inv_m.data();
-  const double slider = c.v_slider * t;
-  auto one = [&](int i) { a[i] = mobile[i] * inv_m[i] * force_checked<Coupled, Damped>(k, i, slider, u, v, f_kin[i]); };
-  int first = lo, last = hi;
-  if (first == 0 && first < last) one(first++);
-  if (last == N && first < last) one(--last);
   for (int i = first; i < last; ++i)
-    a[i] = mobile[i] * inv_m[i] * force_interior<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
+    a[i] = mobile[i] * (PerBlock ? inv_m[i] : inv_m0) * force_interior<Coupled, Damped>(k, i, slider, u, v, f_kin[i]);
 }
 
 // Either, as the chain is: the steppers of the event method, which step a few spans per stage.
@@ -50,8 +39,8 @@ template <bool Coupled, bool Damped>
 SB_INLINE void chain_accel_of(const Chain& c, int lo, int hi, const double* __restrict u, const double* __restrict v,
                               double t, const double* __restrict mobile, const double* __restrict f_kin,
                               double* __restrict a) {
-  if (c.uniform()) chain_accel<Coupled, Damped>(c, lo, hi, u, v, t, mobile, f_kin, a);
-  else chain_accel_per_block<Coupled, Damped>(c, lo, hi, u, v, t, mobile, f_kin, a);
+  if (c.uniform()) chain_accel<Coupled, Damped, false>(c, lo, hi, u, v, t, mobile, f_kin, a);
+  else chain_accel<Coupled, Damped, true>(c, lo, hi, u, v, t, mobile, f_kin, a);
 }
 
 }  // namespace sb::event_detail
