@@ -107,7 +107,6 @@ class ActiveSet {
   // neighbours' (the modal runs as materialise writes them at a sample; the stepped runs are the
   // stepper's to write).
   void materialise_live(double t, double* u, double* v, bool ends_only);
-  int modal_runs() const { return modal_.count(); }
   // The settle scales: a grooves-only run's transient below these (in u and v) is dropped.
   double settle_eps_u() const { return rules_.eps_u; }
   double settle_eps_v() const { return rules_.eps_v; }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "springblock/integrate/events/active_set.hpp"
+#include "springblock/integrate/numerics/affine_crossing.hpp"
 #include "springblock/integrate/numerics/infinity.hpp"
 
 namespace sb::event_detail {
@@ -121,14 +122,7 @@ void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
     }
   }
   forces_.affine(i, a - b * s.t, b);  // a + b tau with tau = t - s.t
-  // First time a + b tau reaches +-f_static. b = 0 (nothing loads it) never crosses.
-  const double f = c.f_static[i];
-  if (b == 0.0) {
-    events_.set(i, kInf, false);
-    return;
-  }
-  const double tau = ((b > 0 ? f : -f) - a) / b;
-  events_.set(i, s.t + std::max(tau, 0.0), false);
+  events_.set(i, s.t + affine_crossing(a, b, c.f_static[i]), false);
 }
 
 bool ActiveSet::retire_settled(const Chain& c, const State& s) {

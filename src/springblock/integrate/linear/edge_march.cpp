@@ -1,4 +1,5 @@
 #include "springblock/integrate/linear/edge_march.hpp"
+#include "springblock/integrate/numerics/affine_crossing.hpp"
 #include "springblock/integrate/numerics/infinity.hpp"
 
 #include <algorithm>
@@ -46,10 +47,7 @@ void EdgeMarch::finish(double H) {
 }
 
 double EdgeMarch::affine_reach(double a, double b, double fs) const {
-  if (gap_.sense == Sense::Abs) {
-    if (b == 0.0) return kInf;
-    return std::max(((b > 0 ? fs : -fs) - a) / b, 0.0);
-  }
+  if (gap_.sense == Sense::Abs) return affine_crossing(a, b, fs);
   return b > 0 ? std::max((fs - a) / b, 0.0) : kInf;
 }
 

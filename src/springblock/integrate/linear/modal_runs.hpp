@@ -93,8 +93,6 @@ class ModalRuns {
   Found crossing_time(const Chain& c, const State& s, int j, const double base[2], const double nb_B[2],
                       double t_limit);
 
-  int count() const { return static_cast<int>(runs_.size()); }
-
  private:
   struct Run {
     int lo, hi;

@@ -1,21 +1,12 @@
 #include "springblock/integrate/linear/quiet_phase.hpp"
 #include "springblock/integrate/linear/envelope.hpp"
+#include "springblock/integrate/numerics/affine_crossing.hpp"
 #include "springblock/integrate/numerics/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace sb::event_detail {
-namespace {
-
-// First tau >= 0 at which an affine force a + b tau reaches +-f (|a| <= f assumed).
-double affine_crossing(double a, double b, double f) {
-  if (b == 0.0) return kInf;
-  const double tau = ((b > 0 ? f : -f) - a) / b;
-  return std::max(tau, 0.0);
-}
-
-}  // namespace
 
 QuietPhase::QuietPhase(const Chain& c, RunStore& store)
     : slider_slope_(c.K_s * c.v_slider), store_(store), cursor_{{0, Coords(c.N)}, false}, kept_(cursor_) {

@@ -20,9 +20,10 @@
 // affine force plus damped modes; its first crossing is searched by EdgeMarch (edge_march.hpp),
 // the blocks in order of a cheap lower bound on their crossing so that later searches stop early.
 //
-// Samples inside a quiet phase are served by sample(): the modal coordinates are advanced from
-// the previous sample by each mode's exact transition matrix over the sample spacing (no
-// transcendental calls), and segments whose modes have died out cost only their affine part.
+// Samples inside a quiet phase are served by advance_sample and write_sample: the modal
+// coordinates are advanced from the previous sample by each mode's exact transition matrix over
+// the sample spacing (no transcendental calls), and segments whose modes have died out cost only
+// their affine part.
 // What the phase knows of the contact blocks' forces at its samples (each an affine part plus
 // its segments' end rows) it offers to observers as RingingForces (quiet_ringing.hpp).
 #include <cstdint>
@@ -69,14 +70,13 @@ class QuietPhase {
 
   // Exact u, v of every groove block at time t >= t0 (other entries untouched).
   void evaluate(double t, double* u, double* v);
-  // The same for a sequence of increasing sample times spaced by set_sample_dt's dt (any
-  // other spacing falls back to the closed form). With ends_only, only the groove blocks next to
-  // a contact block are exact (O(modes) per segment instead of O(n^2)); the others are left
-  // untouched. Enough for an observer that reads only the contact blocks' forces.
-  void sample(double t, double* u, double* v, bool ends_only = false);
+  // The same at a sequence of increasing sample times spaced by set_sample_dt's dt (any other
+  // spacing falls back to the closed form), in two halves: the modal coordinates brought to
+  // sample time t, then the rows written from them (write_sample needs the advance_sample of the
+  // same t before it). With ends_only, only the groove blocks next to a contact block are exact
+  // (O(modes) per segment instead of O(n^2)); the others are left untouched. Enough for an
+  // observer that reads only the contact blocks' forces.
   void set_sample_dt(double dt);
-  // sample() in two halves: the modal coordinates brought to sample time t, then the rows
-  // written from them (write_sample needs the advance_sample of the same t before it).
   // The recurrence restarts from the closed form at the phase's first sample, after a gap in
   // the spacing, and at every sample whose index is a multiple of kSampleBlock: a sample's value
   // then depends only on its index and the phase, not on which samples were served before it
@@ -99,8 +99,8 @@ class QuietPhase {
 
   int distinct_decompositions() const { return store_.shapes().size(); }
 
-  // Samples for an observer of contact forces only (sample() with ends_only, sample_affine) drop a
-  // segment's modes once every row's transient is below eps_u in u and eps_v in v: the active
+  // Samples for an observer of contact forces only (write_sample with ends_only, sample_affine)
+  // drop a segment's modes once every row's transient is below eps_u in u and eps_v in v: the active
   // set's settle scales (0.1 x the stepper's absolute tolerances), so a sample's forces carry at
   // most K_int eps_u per contact block beside a groove. The dynamics (evaluate, next_threshold)
   // keeps them to round-off. Without this call samples keep them to round-off too.

@@ -34,11 +34,6 @@ void QuietPhase::evaluate(double t, double* u, double* v) {
 
 void QuietPhase::set_sample_dt(double dt) { store_.shapes().set_sample_dt(dt); }
 
-void QuietPhase::sample(double t, double* u, double* v, bool ends_only) {
-  advance_sample(t, ends_only);
-  write_sample(t, u, v, ends_only);
-}
-
 void QuietPhase::advance_sample(double t, bool ends_only) {
   const double tau = t - t0_;
   // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
