@@ -1,6 +1,9 @@
 """Generated text in hand-written files, and files written whole or not at all: shared by the
 tools that write the generated blocks of the README and the documentation (readme_results.py;
-readme_cost.py and cost_model.py, into docs/cost.md)."""
+readme_cost.py, cost_model.py, sweep_cost.py, design_cost.py and first_slip_cost.py, into
+docs/cost.md)."""
+import argparse
+import json
 import os
 import sys
 import tempfile
@@ -50,3 +53,20 @@ def put_block(args, begin, end, text, tool):
     write_atomic(args.page, replace_block(page, begin, end, text))
     print(f"{tool}: wrote the block into {args.page}", file=sys.stderr)
     return 0
+
+
+def main_from_file(argv, tool, doc, source, page, begin, end, make_block, errors=()):
+    """The command of a tool that writes one block from one benchmark's JSON: --from (default
+    source), --page/--write/--print; exit 2 with the reason, the page untouched, when the file
+    cannot be read or make_block finds it wanting (ValueError, KeyError, TypeError, or errors)."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    ap.add_argument("--from", dest="source", default=source)
+    block_actions(ap, page)
+    a = ap.parse_args(argv)
+    try:
+        with open(a.source) as f:
+            text = make_block(json.load(f))
+    except (OSError, ValueError, KeyError, TypeError, *errors) as e:
+        print(f"{tool}: cannot read {a.source} ({type(e).__name__}: {e})", file=sys.stderr)
+        return 2
+    return put_block(a, begin, end, text, tool)

@@ -29,4 +29,19 @@ class Forwarding : public sb::Observer {
   sb::FrictionObserver& inner_;
 };
 
+// The plain reference of the faster routes: it takes no affine stretch, no quiet-phase sums and
+// not the integrator's known forces, and needs every position, so the integrator serves each
+// sample one by one from the state with its positions written.
+class PerSample : public Forwarding {
+ public:
+  using Forwarding::Forwarding;
+  void sample_ringing(const sb::Chain& c, const sb::State& s, sb::RingingForces& f) override {
+    sb::Observer::sample_ringing(c, s, f);
+  }
+  long sample_affine(const sb::Chain&, const sb::State&, long, double, long, const sb::AffineForces&) override {
+    return 0;
+  }
+  bool needs_positions_at(double) const override { return true; }
+};
+
 }  // namespace sbtest

@@ -16,51 +16,30 @@
 #include "springblock/integrate/integrator.hpp"
 #include "springblock/observe/friction_observer.hpp"
 #include "springblock/scene_fields.hpp"
+#include "forwarding_observer.hpp"
 
 using namespace sb;
 
 namespace {
 
-// Everything to a FrictionObserver except the integrator's known forces and its stretches: every
-// sample is then served from the state (sample()).
-class FromPositions final : public Observer {
- public:
-  explicit FromPositions(FrictionObserver& o) : o_(o) {}
-  void sample(const Chain& c, const State& s) override { o_.sample(c, s); }
-  bool wants_stop() const override { return o_.wants_stop(); }
-  bool reads_groove_interiors() const override { return o_.reads_groove_interiors(); }
-  bool reads_only_friction() const override { return o_.reads_only_friction(); }
-
- private:
-  FrictionObserver& o_;
-};
-
 // Everything to a FrictionObserver, counting what the known forces offered, and refusing the
-// stretches as FromPositions does, so that the two see the same samples one by one. Positions
-// only where the observer needs them, so an active-phase sample gets only what its live blocks
-// read (ActiveSet::materialise_live), and a quiet phase's samples the forces it knows.
-class Counting final : public Observer {
+// stretches as the plain PerSample does, so that the two see the same samples one by one.
+// Positions only where the observer needs them, so an active-phase sample gets only what its live
+// blocks read (ActiveSet::materialise_live), and a quiet phase's samples the forces it knows.
+class Counting final : public sbtest::Forwarding {
  public:
-  explicit Counting(FrictionObserver& o) : o_(o) {}
-  void sample(const Chain& c, const State& s) override { o_.sample(c, s); }
-  void sample_ringing(const Chain& c, const State& s, RingingForces& f) override { o_.sample_ringing(c, s, f); }
+  using Forwarding::Forwarding;
+  long sample_affine(const Chain&, const State&, long, double, long, const AffineForces&) override { return 0; }
   bool takes_active_forces() const override { return true; }
   void sample_active(const Chain& c, const State& s, const ActiveForces& f) override {
     ++active;
     times.push_back(s.t);
     with_live += !f.live.empty();
     with_changes += !f.changed.empty() && !f.all_changed;
-    o_.sample_active(c, s, f);
+    inner_.sample_active(c, s, f);
   }
-  bool wants_stop() const override { return o_.wants_stop(); }
-  bool reads_groove_interiors() const override { return o_.reads_groove_interiors(); }
-  bool reads_only_friction() const override { return o_.reads_only_friction(); }
-  bool needs_positions_at(double t) const override { return o_.needs_positions_at(t); }
   long active = 0, with_live = 0, with_changes = 0;
   std::vector<double> times;  // of the samples from the known forces, in order
-
- private:
-  FrictionObserver& o_;
 };
 
 Scene scene(const std::string& pattern, int N, const std::string& stepper = "exact") {
@@ -82,7 +61,7 @@ void expect_known_forces_give_the_positions_mu(const Scene& sc) {
   cfg.keep_series = true;
   FrictionObserver known(cfg), plain(cfg);
   Counting counting(known);
-  FromPositions from_positions(plain);
+  sbtest::PerSample from_positions(plain);
   State s1 = State::at_rest(c), s2 = State::at_rest(c);
   make_integrator(sc.run)->run(c, s1, sc.duration(), sc.run.sample_dt_s, counting);
   make_integrator(sc.run)->run(c, s2, sc.duration(), sc.run.sample_dt_s, from_positions);

@@ -14,6 +14,7 @@
 #include "springblock/integrate/integrator.hpp"
 #include "springblock/observe/friction_observer.hpp"
 #include "springblock/scene_fields.hpp"
+#include "forwarding_observer.hpp"
 
 using namespace sb;
 
@@ -65,20 +66,6 @@ void expect_observation_changes_nothing(Scene plain) {
   EXPECT_EQ(c.runs[0].stress.size(), 2u);
 }
 
-// Forwards every sample to a FrictionObserver but takes no affine stretch: the integrator then
-// serves each sample one by one, with the state.
-class PerSample final : public Observer {
- public:
-  explicit PerSample(FrictionObserver& o) : o_(o) {}
-  void sample(const Chain& c, const State& s) override { o_.sample(c, s); }
-  bool wants_stop() const override { return o_.wants_stop(); }
-  bool reads_groove_interiors() const override { return o_.reads_groove_interiors(); }
-  bool reads_only_friction() const override { return o_.reads_only_friction(); }
-
- private:
-  FrictionObserver& o_;
-};
-
 // The series built from affine stretches against the one built sample by sample: the same
 // times and sliding counts, mu to round-off.
 void expect_stretch_series_is_the_per_sample_one(const Scene& sc) {
@@ -87,7 +74,7 @@ void expect_stretch_series_is_the_per_sample_one(const Scene& sc) {
   cfg.F_load = c.F_load;
   cfg.keep_series = true;
   FrictionObserver stretched(cfg), single(cfg);
-  PerSample per_sample(single);
+  sbtest::PerSample per_sample(single);
   State s1 = State::at_rest(c), s2 = State::at_rest(c);
   make_integrator(sc.run)->run(c, s1, sc.duration(), sc.run.sample_dt_s, stretched);
   make_integrator(sc.run)->run(c, s2, sc.duration(), sc.run.sample_dt_s, per_sample);

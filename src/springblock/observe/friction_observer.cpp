@@ -117,10 +117,7 @@ void FrictionObserver::sample(const Chain& c, const State& s) {
 void FrictionObserver::follow_forces(const Chain& c, const State& s, const ActiveForces& f) {
   // A live block's leaf holds 0 (its force is read at the sample); a sliding one's sign is its
   // direction's, fixed while it slides.
-  auto put = [&](int i) {
-    const bool known = f.kind[i] == ActiveForces::kAffine || f.kind[i] == ActiveForces::kSliding;
-    active_->set(i, known ? f.a[i] : 0.0, known ? f.b[i] : 0.0, f.kind[i] == ActiveForces::kSliding, s.t);
-  };
+  auto put = [&](int i) { active_->set(i, f.a[i], f.b[i], f.kind[i] == ActiveForces::kSliding, s.t); };
   if (!active_ || f.all_changed) {
     if (!active_) active_ = std::make_unique<AffineForceTree>(c);
     for (int i = 0; i < c.N; ++i)

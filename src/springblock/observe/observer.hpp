@@ -56,6 +56,8 @@ class SwitchedBlocks {
 //   kLive     stuck beside a run that moves otherwise: read it from the state, which holds its
 //             own and its neighbours' positions at the sample;
 //   kNone     no contact (or not classified yet).
+// a[i] and b[i] are 0 where the force is not known (kLive, kNone), so a sum over a and b needs
+// no test of the kind.
 // Between two samples only a few blocks change entry, so an observer that sums the forces keeps
 // the affine and sliding ones in a tree (AffineForceTree) and reads only the live ones: O(what
 // moves) a sample instead of O(N). changed lists the blocks whose entry changed since the
