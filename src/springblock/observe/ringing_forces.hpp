@@ -35,8 +35,14 @@ class RingingForces {
   virtual const std::vector<EdgeForce>& edges() const = 0;
   virtual int groups() const = 0;
 
-  // Every term at the sample the integrator is serving (tau = its time - t0); 0 where the
-  // group's modes are below the sample scales.
+  // The groups whose terms may be nonzero in this phase (the others are 0 throughout), and a
+  // time after every sample of the phase (tau < tau_end; +inf while the phase's end is unknown).
+  // An observer that reads every sample can then sum once per phase what cannot change there.
+  virtual const std::vector<int>& live_groups() const = 0;
+  virtual double tau_end() const = 0;
+  // The live groups' terms at the sample the integrator is serving (tau = its time - t0); 0
+  // where the group's modes are below the sample scales. The other groups' entries are not
+  // written.
   virtual void terms_now(double tau, double* x) const = 0;
   // From the sample at tau0 on: bound[term] >= |term| at every later time (0 for a group whose
   // modes no longer count). With sums_wanted, false when some group's modes have no closed-form

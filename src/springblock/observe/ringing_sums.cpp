@@ -23,6 +23,7 @@ namespace sb {
 
 RingingSums::RingingSums(RingingForces& forces)
     : f_(forces),
+      now_(2 * static_cast<std::size_t>(forces.groups())),
       terms_(2 * static_cast<std::size_t>(forces.groups())),
       bound_(2 * static_cast<std::size_t>(forces.groups())),
       slot_(static_cast<std::size_t>(forces.groups())) {}
@@ -33,6 +34,7 @@ void RingingSums::prepare() {
   const std::vector<double>& a = f_.interior();
   interior_.reset(a.data(), static_cast<int>(a.size()), f_.interior_slope());
   interior_of_ = phase;
+  std::fill(now_.begin(), now_.end(), 0.0);
   t0_ = f_.t0();
   edges_ = &f_.edges();
 }
@@ -41,10 +43,10 @@ void RingingSums::at(double t, double& sum_abs, double& sum_signed) {
   prepare();
   const double tau = t - t0_;
   interior_.at(tau, sum_abs, sum_signed);
-  f_.terms_now(tau, terms_.data());
+  f_.terms_now(tau, now_.data());
   for (const EdgeForce& e : *edges_) {
     double f = e.fa + e.fb * tau;
-    for (int r = 0; r < e.n; ++r) f += e.k[r] * terms_[e.term[r]];
+    for (int r = 0; r < e.n; ++r) f += e.k[r] * now_[e.term[r]];
     sum_abs += std::fabs(f);
     sum_signed += f;
   }

@@ -51,7 +51,8 @@ class RingingSums {
   long interior_of_ = -1;           // the phase interior_ holds (RingingForces::phase)
   double t0_ = 0;
   const std::vector<EdgeForce>* edges_ = nullptr;
-  std::vector<double> terms_;       // per term: its value (at) or its sum (window)
+  std::vector<double> now_;         // per term: its value (at; the groups not live stay 0)
+  std::vector<double> terms_;       // per term: its sum (window)
   std::vector<double> bound_;       // per term: bound on it from a stretch's first sample on
   std::vector<char> unsure_;        // per edge: its sign not fixed by the bounds
   std::vector<int> slot_;           // unsure_sums: per group, its place in values_ (-1: none)

@@ -71,10 +71,10 @@ void QuietPhase::take_record(const Chain& c, const GrooveRun& s, const double* u
   const BlockRange r{s.first, s.first + s.n};
   const RunStore::Run* held = store_.exact(r);
   if (held != nullptr && (held->owner == RunStore::kSettled || held->owner == RunStore::kModal)) {
-    store_.rebase(s.first, t0_);
+    store_.rebase(s.first, span_.t0);
     return;
   }
-  store_.project(c, r, t0_, u, v, nullptr, RunStore::kQuiet);
+  store_.project(c, r, span_.t0, u, v, nullptr, RunStore::kQuiet);
 }
 
 // Underdamped modes shrink at least like e^{-alpha tau} (amplitude and velocity amplitude); once
@@ -90,7 +90,7 @@ void QuietPhase::set_dead_times(GrooveRun& s) const {
     for (const DampedMode& m : rec.shape->modes) decays = decays && m.alpha > 0 && m.s > 0;
     bool u_pos = false, v_pos = false;
     for (int i = s.first; i < s.first + s.n && !(u_pos && v_pos); ++i) {
-      u_pos = u_pos || 1e-17 * std::fabs(store_.path_u(i, t0_)) > 0;
+      u_pos = u_pos || 1e-17 * std::fabs(store_.path_u(i, span_.t0)) > 0;
       v_pos = v_pos || 1e-17 * std::fabs(store_.B(i)) > 0;
     }
     s.dead_tau = decays && u_pos && v_pos ? 0.0 : kInf;
@@ -99,7 +99,7 @@ void QuietPhase::set_dead_times(GrooveRun& s) const {
   }
   double uscale = 0, vscale = 0;
   for (int i = s.first; i < s.first + s.n; ++i) {
-    uscale = std::max(uscale, std::fabs(store_.path_u(i, t0_)));
+    uscale = std::max(uscale, std::fabs(store_.path_u(i, span_.t0)));
     vscale = std::max(vscale, std::fabs(store_.B(i)));
   }
   const TransientEnvelope env = store_.envelope(store_.run(s.first));
@@ -108,12 +108,16 @@ void QuietPhase::set_dead_times(GrooveRun& s) const {
 }
 
 void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
-  t0_ = t0;
+  span_.t0 = t0;
+  span_.next = kInf;
   cursor_.valid = false;
   ++interior_.phase;
-  for (GrooveRun& s : segs_) {
+  live_.clear();
+  for (std::size_t k = 0; k < segs_.size(); ++k) {
+    GrooveRun& s = segs_[k];
     take_record(c, s, u, v);
     set_dead_times(s);
+    if (store_.run(s.first).modes) live_.push_back(static_cast<int>(k));
   }
   for (std::size_t k = 0; k < interior_.blocks.size(); ++k)
     interior_.a[k] = c.driving_force(interior_.blocks[k], u, v, t0);
@@ -142,7 +146,7 @@ void QuietPhase::release() {
 double QuietPhase::all_dead_after() const {
   double tau = 0;
   for (const GrooveRun& s : segs_) tau = std::max(tau, s.sample_dead_tau);
-  return t0_ + tau;
+  return span_.t0 + tau;
 }
 
 void QuietPhase::affine_forces(const Chain& c, const double* u, double* a, double* b) const {
@@ -163,7 +167,7 @@ void QuietPhase::affine_forces(const Chain& c, const double* u, double* a, doubl
 }
 
 QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
-  double best = t_limit - t0_;
+  double best = t_limit - span_.t0;
   int block = -1;
   for (std::size_t k = 0; k < interior_.blocks.size(); ++k) {
     const int j = interior_.blocks[k];
@@ -197,10 +201,11 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
   for (int k : edges_.order) {
     Edge& e = edges_.list[k];
     if (e.lower > best) break;
-    const double tau = e.march.first_crossing(store_.q0(), store_.p0(), c.f_static[e.block], best, t0_);
+    const double tau = e.march.first_crossing(store_.q0(), store_.p0(), c.f_static[e.block], best, span_.t0);
     if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;
   }
-  return {t0_ + best, block};
+  span_.next = span_.t0 + best;
+  return {span_.next, block};
 }
 
 }  // namespace sb::event_detail

@@ -119,10 +119,14 @@ class QuietPhase {
   // the segment ends it rings with, as RingingForces numbers them, with the springs between) and
   // those beside none (each with its force at t0, all with the slider's slope K_s v), and the
   // sample cursor.
-  double t0() const { return t0_; }
+  double t0() const { return span_.t0; }
   double slider_slope() const { return slider_slope_; }
   const RunStore& store() const { return store_; }
   const std::vector<GrooveRun>& segments() const { return segs_; }
+  // The segments whose records have modes (the others are on their paths for the whole phase),
+  // and the end of the phase once next_threshold found it (+inf before).
+  const std::vector<int>& live_segments() const { return live_; }
+  double t_next() const { return span_.next; }
   const std::vector<Edge>& edges() const { return edges_.list; }
   const std::vector<EdgeForce>& edge_forces() const { return edges_.forces; }
   const std::vector<double>& interior_forces() const { return interior_.a; }
@@ -159,10 +163,15 @@ class QuietPhase {
   void write_segment(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
                      double* v, bool ends_only);
 
-  double t0_ = 0;
+  // The phase's start, and its end once next_threshold found it.
+  struct Span {
+    double t0 = 0, next = 0;
+  };
+  Span span_;
   double slider_slope_ = 0;  // K_s v: the slope of every contact block's force in a quiet phase
   RunStore& store_;
   std::vector<GrooveRun> segs_;
+  std::vector<int> live_;
   Edges edges_;
   Interior interior_;
   Scales scales_;

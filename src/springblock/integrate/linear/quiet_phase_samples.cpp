@@ -10,6 +10,7 @@ namespace sb::event_detail {
 void QuietPhase::write_segment(const GrooveRun& s, double t, bool live, const double* q, const double* qd,
                                double* u, double* v, bool ends_only) {
   const RunStore::Run& rec = store_.run(s.first);
+  live = live && rec.modes;  // no modes: its path (the sample cursor holds none of its slots)
   if (!ends_only) {
     if (live) store_.write(rec, t, q, qd, u, v);
     else store_.write_path(rec, t, u, v);
@@ -24,7 +25,7 @@ void QuietPhase::write_segment(const GrooveRun& s, double t, bool live, const do
 }
 
 void QuietPhase::evaluate(double t, double* u, double* v) {
-  const double tau = t - t0_;
+  const double tau = t - span_.t0;
   for (const GrooveRun& s : segs_) {
     const RunStore::Run& rec = store_.run(s.first);
     if (tau <= s.dead_tau) store_.write_at(rec, t, u, v);
@@ -35,13 +36,14 @@ void QuietPhase::evaluate(double t, double* u, double* v) {
 void QuietPhase::set_sample_dt(double dt) { store_.shapes().set_sample_dt(dt); }
 
 void QuietPhase::advance_sample(double t, bool ends_only) {
-  const double tau = t - t0_;
+  const double tau = t - span_.t0;
   // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
   // from that by round-off only. Restart from the closed form at every block start (header).
   const double dt = store_.shapes().sample_dt();
   const bool step = cursor_.valid && dt > 0 && std::fabs((t - cursor_.at.t) - dt) <= 1e-9 * dt &&
                     std::llround(t / dt) % kSampleBlock != 0;
-  for (const GrooveRun& s : segs_) {
+  for (int k : live_) {
+    const GrooveRun& s = segs_[k];
     // An observer that reads only contact forces (ends_only) takes the modes as gone once they
     // are below the settle scales; one that reads every row gets them to round-off.
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
@@ -55,7 +57,7 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
 }
 
 void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) {
-  const double tau = t - t0_;
+  const double tau = t - span_.t0;
   for (const GrooveRun& s : segs_) {
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
     write_segment(s, t, live, cursor_.at.x.q.data(), cursor_.at.x.p.data(), u, v, ends_only);

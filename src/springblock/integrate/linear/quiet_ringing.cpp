@@ -13,7 +13,7 @@ QuietRinging::QuietRinging(const QuietPhase& phase)
       w1_(static_cast<int>(phase.cursor().q.size())) {}
 
 void QuietRinging::terms_now(double tau, double* x) const {
-  for (std::size_t k = 0; k < phase_.segments().size(); ++k) {
+  for (int k : phase_.live_segments()) {
     const QuietPhase::GrooveRun& s = phase_.segments()[k];
     double first = 0, last = 0;
     if (tau <= s.sample_dead_tau) s.shape->end_rows(phase_.cursor().q.data() + s.first, first, last);

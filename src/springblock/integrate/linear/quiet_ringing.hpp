@@ -20,6 +20,8 @@ class QuietRinging final : public RingingForces {
   double interior_slope() const override { return phase_.slider_slope(); }
   const std::vector<EdgeForce>& edges() const override { return phase_.edge_forces(); }
   int groups() const override { return static_cast<int>(phase_.segments().size()); }
+  const std::vector<int>& live_groups() const override { return phase_.live_segments(); }
+  double tau_end() const override { return phase_.t_next() - phase_.t0(); }
 
   // From the sample cursor (QuietPhase::advance_sample of the same time).
   void terms_now(double tau, double* x) const override;
