@@ -18,8 +18,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sb {
+namespace {
+constexpr double kNever = std::numeric_limits<double>::infinity();
+}  // namespace
 
 RingingSums::RingingSums(RingingForces& forces)
     : f_(forces),
@@ -35,21 +39,51 @@ void RingingSums::prepare() {
   interior_.reset(a.data(), static_cast<int>(a.size()), f_.interior_slope());
   interior_of_ = phase;
   std::fill(now_.begin(), now_.end(), 0.0);
+  split_.tau_end = -1;
   t0_ = f_.t0();
   edges_ = &f_.edges();
 }
 
 void RingingSums::at(double t, double& sum_abs, double& sum_signed) {
   prepare();
+  if (split_.tau_end != f_.tau_end()) split_edges(f_.tau_end());
   const double tau = t - t0_;
   interior_.at(tau, sum_abs, sum_signed);
+  sum_abs += split_.abs_a + split_.abs_b * tau;
+  sum_signed += split_.signed_a + split_.signed_b * tau;
   f_.terms_now(tau, now_.data());
-  for (const EdgeForce& e : *edges_) {
+  const std::vector<EdgeForce>& edges = *edges_;
+  for (int k : split_.listed) {
+    const EdgeForce& e = edges[k];
     double f = e.fa + e.fb * tau;
     for (int r = 0; r < e.n; ++r) f += e.k[r] * now_[e.term[r]];
     sum_abs += std::fabs(f);
     sum_signed += f;
   }
+}
+
+// An affine force keeps the sign it starts with over [0, tau_end] when its slope does not lead
+// it back to zero or its value at tau_end still has that sign (+inf: the slope alone decides).
+void RingingSums::split_edges(double tau_end) {
+  split_.live.assign(static_cast<std::size_t>(f_.groups()), 0);
+  for (int g : f_.live_groups()) split_.live[g] = 1;
+  split_.listed.clear();
+  split_.abs_a = split_.abs_b = split_.signed_a = split_.signed_b = 0;
+  const std::vector<EdgeForce>& edges = *edges_;
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const EdgeForce& e = edges[k];
+    bool ringing = false;
+    for (int r = 0; r < e.n; ++r) ringing = ringing || split_.live[e.term[r] / 2];
+    const double sg = e.fa >= 0 ? 1.0 : -1.0;
+    const bool keeps = sg * e.fb >= 0 || (tau_end < kNever && sg * (e.fa + e.fb * tau_end) >= 0);
+    if (ringing || !keeps) {
+      split_.listed.push_back(static_cast<int>(k));
+      continue;
+    }
+    split_.abs_a += sg * e.fa, split_.abs_b += sg * e.fb;
+    split_.signed_a += e.fa, split_.signed_b += e.fb;
+  }
+  split_.tau_end = tau_end;
 }
 
 // Whether every contact block's force keeps its sign over tau0 .. tau_last, with bounds on the

@@ -38,8 +38,10 @@ class RingingSums {
   bool envelope(long k0, double dt, long n, Envelope& env);
 
  private:
-  // The interior forces' sums, t0 and the edges of the forces' current phase.
+  // The interior forces' sums, t0 and the edges of the forces' current phase, and at()'s split
+  // of the edges (split_edges) for the phase's end as the forces know it.
   void prepare();
+  void split_edges(double tau_end);
   // window's and envelope's test, and an edge's reach.
   bool keeps_signs(double tau0, double tau_last, bool need_sums);
   double edge_reach(const EdgeForce& e) const;
@@ -51,6 +53,16 @@ class RingingSums {
   long interior_of_ = -1;           // the phase interior_ holds (RingingForces::phase)
   double t0_ = 0;
   const std::vector<EdgeForce>* edges_ = nullptr;
+  // at()'s edges: those beside a live group or whose affine force may change sign before the
+  // phase ends are summed at each sample (listed); every other one keeps its sign over the whole
+  // phase, so |f| = sign(f) f and their sums are one affine function of tau, added up once.
+  struct Split {
+    std::vector<int> listed;
+    double abs_a = 0, abs_b = 0, signed_a = 0, signed_b = 0;
+    double tau_end = -1;           // the phase end it was made for
+    std::vector<char> live;        // per group: live in this phase
+  };
+  Split split_;
   std::vector<double> now_;         // per term: its value (at; the groups not live stay 0)
   std::vector<double> terms_;       // per term: its sum (window)
   std::vector<double> bound_;       // per term: bound on it from a stretch's first sample on

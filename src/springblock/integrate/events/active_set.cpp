@@ -249,14 +249,15 @@ void ActiveSet::materialise(double t, double* u, double* v, bool at_sample, bool
   // modal groove run (materialise_near writes a whole run before a switch reads it).
   for (const Run& r : runs_)
     if (r.kind == kSettled) store_.write_path(store_.run(r.span.lo), t, u, v, ends_only);
-  if (any_modal()) modal_.materialise(t, u, v, at_sample, ends_only);
+  if (any_modal()) modal_.materialise(t, u, v, at_sample, ends_only ? ModalRuns::Rows::kGrooveEnds : ModalRuns::Rows::kEvery);
 }
 
-void ActiveSet::materialise_live(double t, double* u, double* v, bool ends_only) {
+void ActiveSet::materialise_live(double t, double* u, double* v) {
   for (int i : forces_.live_blocks())
     for (int j : {i - 1, i + 1})
       if (j >= 0 && j < N() && kind_[j] == kSettled) u[j] = store_.path_u(j, t), v[j] = store_.B(j);
-  if (any_modal()) modal_.materialise(t, u, v, true, ends_only);
+  // The live blocks are the stuck neighbours of the modal runs: only end rows are read.
+  if (any_modal()) modal_.materialise(t, u, v, true, ModalRuns::Rows::kEnds);
 }
 
 void ActiveSet::materialise_near(double t, double* u, double* v, const std::vector<int>& blocks) {

@@ -104,9 +104,9 @@ class ActiveSet {
   const KnownForces& forces() const { return forces_; }
   void forces_delivered() { forces_.delivered(); }
   // For such a sample: the positions the live blocks' forces read, their settled and modal
-  // neighbours' (the modal runs as materialise writes them at a sample; the stepped runs are the
-  // stepper's to write).
-  void materialise_live(double t, double* u, double* v, bool ends_only);
+  // neighbours' (the modal runs' end rows as materialise writes them at a sample; the stepped
+  // runs are the stepper's to write).
+  void materialise_live(double t, double* u, double* v);
   // The settle scales: a grooves-only run's transient below these (in u and v) is dropped.
   double settle_eps_u() const { return rules_.eps_u; }
   double settle_eps_v() const { return rules_.eps_v; }

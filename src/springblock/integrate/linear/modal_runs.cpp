@@ -57,7 +57,7 @@ void ModalRuns::row_taylor(int i, double t, int deg, double* c) {
   store_.taylor(i, t, scratch_.q.data(), scratch_.p.data(), deg, c);
 }
 
-void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool ends_only) {
+void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, Rows rows) {
   const double sample_dt = store_.shapes().sample_dt();
   for (Run& r : runs_) {
     const RunStore::Run& rec = record(r);
@@ -76,7 +76,7 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, bool
       q = scratch_.q.data(), qd = scratch_.p.data();
     }
     if (at_sample) r.tc = t, r.cursor = true;
-    store_.write(rec, t, q, qd, u, v, ends_only && r.grooves);
+    store_.write(rec, t, q, qd, u, v, rows == Rows::kEnds || (rows == Rows::kGrooveEnds && r.grooves));
   }
 }
 

@@ -71,10 +71,13 @@ class ModalRuns {
   // screen of a stuck block beside this run (span_screen.hpp).
   void row_taylor(int i, double t, int deg, double* c);
   // Write every modal run's exact u, v at t. at_sample: t is a sample time, so the modal
-  // coordinates may be advanced by the sample recurrence and kept as its new start. ends_only:
-  // a grooves-only run writes only its two end rows (the ones a contact block's force reads),
-  // O(n) instead of O(n^2); its interior is left stale.
-  void materialise(double t, double* u, double* v, bool at_sample, bool ends_only = false);
+  // coordinates may be advanced by the sample recurrence and kept as its new start. The rows
+  // written: every row, or only the two end rows (the ones a stuck neighbour's force reads),
+  // O(n) instead of O(n^2), of the grooves-only runs (a reader of every contact block's
+  // position) or of every run (a reader of the stuck neighbours' forces alone); the rows not
+  // written are left stale.
+  enum class Rows { kEvery, kGrooveEnds, kEnds };
+  void materialise(double t, double* u, double* v, bool at_sample, Rows rows = Rows::kEvery);
   // Write the exact u, v at t (off the sample grid) of the run holding block i only.
   void materialise_run(int i, double t, double* u, double* v);
 

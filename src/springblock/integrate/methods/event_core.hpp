@@ -125,7 +125,7 @@ void EventCore::sample_if_due(Write&& write_runs) {
     // The forces known at the sample serve it whether or not the positions are written too, so a
     // sample's value does not depend on whether some observer needs the positions there.
     if (obs.needs_positions_at(s.t)) active.materialise(s.t, s.u.data(), s.v.data(), true, opt.ends_only);
-    else active.materialise_live(s.t, s.u.data(), s.v.data(), opt.ends_only);
+    else active.materialise_live(s.t, s.u.data(), s.v.data());
     obs.sample_active(c, s, active.forces().view());
     active.forces_delivered();
   }
