@@ -192,6 +192,8 @@ class ActiveSet {
   bool any_modal() const { return rules_.modal_max > 0 || rules_.modal_max_groove > 0; }
   // Modal event search of block i up to limit (stop if sliding, threshold crossing if stuck).
   void search_modal(const Chain& c, const State& s, int i, double limit);
+  // How far a modal search of block i need go: the earliest real event that can make it stale.
+  double local_limit(int i) const;
   // Refresh the event queue, then the pending modal searches, each limited by the earliest
   // event so far.
   void finish_events(const Chain& c, const State& s);

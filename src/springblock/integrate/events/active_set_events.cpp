@@ -83,15 +83,43 @@ void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit
 }
 
 void ActiveSet::finish_events(const Chain& c, const State& s) {
-  // Each fresh modal search goes only as far as the earliest event known so far: most of them
-  // never become the next event, and one cut off is searched again when it does (recheck()).
+  // Each fresh modal search goes only as far as the earliest event that can make it stale
+  // (local_limit): most of them never become the next event, and one cut off is searched again
+  // when it does (recheck()).
   events_.refresh();
   for (int i : work_.pending) {
-    // Limited by the earliest real event (not a recheck), so a recheck always makes progress.
-    search_modal(c, s, i, std::min(events_.next_real(), rules_.t_end));
+    search_modal(c, s, i, std::min(local_limit(i), rules_.t_end));
     events_.offer(i);
   }
   work_.pending.clear();
+}
+
+// A search of block i reads its own run or the modal or settled runs beside it, and its
+// neighbours; only a switch in those blocks or at those runs' borders changes them, and that
+// searches i again. So the
+// search need go no further than the earliest real event among them (rechecks are not events:
+// each is at least its time, and two rechecks limited by each other would not progress). With
+// every block of the chain as the limit, a long chain's searches were cut at events far away and
+// resumed from scratch, a cost that grew with N. A stepped run among them or beside them can
+// switch at any step without an entry in the queue: then the chain's earliest real event.
+double ActiveSet::local_limit(int i) const {
+  double t = kInf;
+  bool unknown = false;  // a stepped run can switch a block at any step, with no entry here
+  auto stepped = [&](int k) { return k >= 0 && k < N() && kind_[k] == kStepped; };
+  auto take = [&](int k) {
+    if (k < 0 || k >= N() || k == i) return;
+    unknown = unknown || stepped(k - 1) || stepped(k) || stepped(k + 1);
+    if (!events_.is_recheck(k)) t = std::min(t, events_.time(k));
+  };
+  take(i - 1), take(i + 1);
+  for (int j : {i - 1, i, i + 1}) {
+    if (j < 0 || j >= N() || (kind_[j] != kModal && kind_[j] != kSettled)) continue;
+    const RunStore::Run& r = store_.run(j);
+    take(r.lo - 1), take(r.hi);
+    if (kind_[j] == kModal)
+      for (int k = r.lo; k < r.hi; ++k) take(k);  // its sliding blocks' stops
+  }
+  return unknown ? events_.next_real() : t;
 }
 
 void ActiveSet::recheck(const Chain& c, const State& s) {

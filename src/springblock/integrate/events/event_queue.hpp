@@ -31,6 +31,7 @@ class EventQueue {
   // Every write of an event time goes through here (marks the block for refresh()).
   void set(int i, double t, bool recheck);
   double time(int i) const { return t_[i]; }
+  bool is_recheck(int i) const { return recheck_[i] != 0; }  // block i's entry is a cut-off search
 
   // Bring the trees up to date with every set() since the last refresh.
   void refresh();
