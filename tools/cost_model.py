@@ -4,7 +4,7 @@ unit of work it counts, fitted on some scenes and checked on others.
 
     T = c_event * slip_events + c_episode * slip_starts + c_sample * samples
 
-slip_events are avalanches (quiet phases begun after something slid), slip_starts block-slip
+slip_events are avalanches (driver turns with nothing sliding after something slid), slip_starts block-slip
 episodes (a contact block starts to slide), samples the mu(t) samples served one by one (those
 taken as affine stretches of a quiet phase cost almost nothing each and are left out). The counts
 come from `springblock run --threads 1 --profile --json` (runs[].work), the time is runs[].wall_s

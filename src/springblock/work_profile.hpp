@@ -17,7 +17,7 @@ namespace sb {
 
 // name, meaning. Counts of one run.
 #define SB_WORK_COUNTS(X)                                                                                     \
-  X(slip_events, "quiet phases begun after something slid: one per slip event (avalanche), event method")      \
+  X(slip_events, "turns with nothing sliding after something slid: one per slip event (avalanche), event method")      \
   X(slip_starts, "block-slip episodes: a contact block starts to slide")                                       \
   X(stepped_attempts, "steps of the moving runs (exact or Dormand-Prince trials: accepted, rejected, redone)")   \
   X(rejected_steps, "trial steps rejected by the error control")                                               \

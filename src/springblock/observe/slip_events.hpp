@@ -14,10 +14,10 @@
 // sliding; a block that starts and stops at one instant while nothing else slides makes an event
 // of zero duration and zero slip. An event still under way when the run ends is not recorded (its
 // slip is not known yet): unfinished() says there was one, and under_way() what it held so far. The
-// event method's work profile counts
-// the same events when the quiet phase after each begins (WorkProfile::slip_events), so the two
-// agree unless the run ends at the very instant an event ended (no quiet phase follows it, at the
-// end of the run or where an observer stops it): then this records one more.
+// event method's work profile counts the same events at the first turn of its driver with nothing
+// sliding after each (WorkProfile::slip_events), so the two agree unless the run ends at the very
+// instant an event ended (no such turn follows it, at the end of the run or where an observer
+// stops it): then this records one more.
 //
 // The run must start with every contact block stuck (State::at_rest, the ensemble's start).
 #include <cstdint>

@@ -129,6 +129,7 @@ class ActiveSet {
   // search was cut off there, call recheck() at its time.
   using Next = EventQueue::Next;
   Next next_crossing() const { return events_.next(); }
+  double next_real() const { return events_.next_real(); }  // the earliest of them not a recheck
   // At next_crossing().t with recheck set: continue that block's search from s.t.
   void recheck(const Chain& c, const State& s);
 

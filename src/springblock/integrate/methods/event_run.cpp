@@ -24,7 +24,7 @@ void EventRun::run() {
   State& s = core_.s;
   core_.begin();
   while (s.t < core_.t_end && !core_.obs.wants_stop()) {
-    if (quiet_ && core_.sw.n_sliding() == 0) {
+    if (quiet_ && core_.sw.n_sliding() == 0 && quiet_->pays()) {
       if (!quiet_->phase()) return;  // the observer stopped the run inside it; its state is exact
     } else if (core_.active.stepped().empty()) {
       core_.jump();
