@@ -58,10 +58,7 @@ void EventCore::reclassify(bool from_scratch) {
   sw.clear_touched();
 }
 
-// Only the exact runs the switch reads or re-projects are brought to s.t first, unless the
-// switch may stop every sliding block (every sliding block is flagged: only flagged blocks
-// switch, and one that starts stops none): a quiet phase begins from the whole state. (Not after
-// settling: that would overwrite the v = 0 of the blocks that just stopped.)
+// Every sliding block is flagged (only flagged blocks switch, and one that starts stops none).
 bool EventCore::may_go_quiet() const {
   int stopping = 0;
   for (int i : sw.flagged()) stopping += s.dir[i] != 0;
@@ -71,8 +68,10 @@ bool EventCore::may_go_quiet() const {
 void EventCore::switch_now(bool bring_runs) {
   WorkTimer timer(s.work, s.work.switching_s);
   ++s.work.switch_instants;
-  if (bring_runs && may_go_quiet()) active.materialise(s.t, s.u.data(), s.v.data());
-  else if (bring_runs) active.materialise_near(s.t, s.u.data(), s.v.data(), sw.flagged());
+  // Only the exact runs the switch reads or re-projects: a quiet phase that may follow brings the
+  // rest itself (QuietEvolve::phase), and most switches that stop every sliding block are not
+  // followed by one.
+  if (bring_runs) active.materialise_near(s.t, s.u.data(), s.v.data(), sw.flagged());
   if (sw.apply(c, s) > 0 && opt.switch_log) opt.switch_log->push_back(s.t);
   if (!sw.touched_list().empty()) obs.switched(c, s, sw.touched_list());
   reclassify(false);

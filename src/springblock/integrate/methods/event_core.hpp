@@ -79,8 +79,8 @@ class EventCore {
   void begin();
   void finish();
   // Apply the switching rules to the flagged blocks at s.t, after the exact runs the switch reads
-  // (or, when it may stop every sliding block, all of them) are brought to s.t (bring_runs: a
-  // quiet phase has brought every block there itself); then classify the runs again.
+  // are brought to s.t (bring_runs: a quiet phase has brought every block there itself); then
+  // classify the runs again.
   void switch_now(bool bring_runs = true);
   // Every sliding block is flagged: the switch may leave nothing sliding.
   bool may_go_quiet() const;

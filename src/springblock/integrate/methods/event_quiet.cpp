@@ -38,6 +38,9 @@ bool QuietEvolve::phase() {
   QuietPhase::Next next;
   {
     WorkTimer timer(s.work, s.work.quiet_s);
+    // The phase begins from the whole state: the settled and modal runs from their records (the
+    // stepped ones are the stepper's, written when the last sliding block stopped).
+    core_.active.materialise(s.t, s.u.data(), s.v.data());
     quiet_.begin(core_.c, s.t, s.u.data(), s.v.data());
     next = quiet_.next_threshold(core_.c, core_.t_end);
   }
