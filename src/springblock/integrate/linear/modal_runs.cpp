@@ -76,7 +76,14 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, Rows
       q = scratch_.q.data(), qd = scratch_.p.data();
     }
     if (at_sample) r.tc = t, r.cursor = true;
-    store_.write(rec, t, q, qd, u, v, rows == Rows::kEnds || (rows == Rows::kGrooveEnds && r.grooves));
+    if (rows == Rows::kEnds) {
+      double first, last;
+      rec.shape->end_rows(q + r.lo, first, last);
+      u[r.lo] = store_.path_u(r.lo, t) + first;
+      u[r.hi - 1] = store_.path_u(r.hi - 1, t) + last;
+      continue;
+    }
+    store_.write(rec, t, q, qd, u, v, rows == Rows::kGrooveEnds && r.grooves);
   }
 }
 

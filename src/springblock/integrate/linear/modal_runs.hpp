@@ -74,8 +74,8 @@ class ModalRuns {
   // coordinates may be advanced by the sample recurrence and kept as its new start. The rows
   // written: every row, or only the two end rows (the ones a stuck neighbour's force reads),
   // O(n) instead of O(n^2), of the grooves-only runs (a reader of every contact block's
-  // position) or of every run (a reader of the stuck neighbours' forces alone); the rows not
-  // written are left stale.
+  // position), or only the end rows' u of every run (a reader of the stuck neighbours' forces
+  // alone, which read no velocity); what is not written is left stale.
   enum class Rows { kEvery, kGrooveEnds, kEnds };
   void materialise(double t, double* u, double* v, bool at_sample, Rows rows = Rows::kEvery);
   // Write the exact u, v at t (off the sample grid) of the run holding block i only.
