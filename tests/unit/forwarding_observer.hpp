@@ -2,7 +2,9 @@
 // An observer that hands every sample to a friction observer, for tests that watch or change one
 // kind of call: blocks of quiet-phase samples offered as sums (sample_sums) it declines, so they
 // come one by one; a test overrides whatever else it watches.
+#include "springblock/integrate/integrator.hpp"
 #include "springblock/observe/friction_observer.hpp"
+#include "springblock/scene.hpp"
 
 namespace sbtest {
 
@@ -43,5 +45,20 @@ class PerSample : public Forwarding {
   }
   bool needs_positions_at(double) const override { return true; }
 };
+
+// A friction observer's configuration for chain c that keeps the mu(t) series.
+inline sb::FrictionObserverConfig series_config(const sb::Chain& c) {
+  sb::FrictionObserverConfig cfg;
+  cfg.F_load = c.F_load;
+  cfg.keep_series = true;
+  return cfg;
+}
+
+// Scene sc on chain c from rest to its end, observed by obs: the final state.
+inline sb::State run_from_rest(const sb::Scene& sc, const sb::Chain& c, sb::Observer& obs) {
+  sb::State s = sb::State::at_rest(c);
+  sb::make_integrator(sc.run)->run(c, s, sc.duration(), sc.run.sample_dt_s, obs);
+  return s;
+}
 
 }  // namespace sbtest

@@ -56,15 +56,10 @@ Scene scene(const std::string& pattern, int N, const std::string& stepper = "exa
 
 void expect_known_forces_give_the_positions_mu(const Scene& sc) {
   const Chain c = build_chain(sc, 0);
-  FrictionObserverConfig cfg;
-  cfg.F_load = c.F_load;
-  cfg.keep_series = true;
-  FrictionObserver known(cfg), plain(cfg);
+  FrictionObserver known(sbtest::series_config(c)), plain(sbtest::series_config(c));
   Counting counting(known);
   sbtest::PerSample from_positions(plain);
-  State s1 = State::at_rest(c), s2 = State::at_rest(c);
-  make_integrator(sc.run)->run(c, s1, sc.duration(), sc.run.sample_dt_s, counting);
-  make_integrator(sc.run)->run(c, s2, sc.duration(), sc.run.sample_dt_s, from_positions);
+  const State s1 = sbtest::run_from_rest(sc, c, counting), s2 = sbtest::run_from_rest(sc, c, from_positions);
   EXPECT_EQ(s1.switches, s2.switches);  // the observer does not change the trajectory
   const auto &a = known.series(), &b = plain.series();
   ASSERT_EQ(a.size(), b.size());

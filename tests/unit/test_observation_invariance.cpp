@@ -70,14 +70,10 @@ void expect_observation_changes_nothing(Scene plain) {
 // times and sliding counts, mu to round-off.
 void expect_stretch_series_is_the_per_sample_one(const Scene& sc) {
   const Chain c = build_chain(sc, 0);
-  FrictionObserverConfig cfg;
-  cfg.F_load = c.F_load;
-  cfg.keep_series = true;
-  FrictionObserver stretched(cfg), single(cfg);
+  FrictionObserver stretched(sbtest::series_config(c)), single(sbtest::series_config(c));
   sbtest::PerSample per_sample(single);
-  State s1 = State::at_rest(c), s2 = State::at_rest(c);
-  make_integrator(sc.run)->run(c, s1, sc.duration(), sc.run.sample_dt_s, stretched);
-  make_integrator(sc.run)->run(c, s2, sc.duration(), sc.run.sample_dt_s, per_sample);
+  sbtest::run_from_rest(sc, c, stretched);
+  sbtest::run_from_rest(sc, c, per_sample);
   const auto &a = stretched.series(), &b = single.series();
   ASSERT_EQ(a.size(), b.size());
   int sliding = 0;

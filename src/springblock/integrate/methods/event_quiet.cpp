@@ -25,10 +25,7 @@ QuietEvolve::QuietEvolve(EventCore& core)
   if (core.opt.ends_only) quiet_.set_sample_scales(core.active.settle_eps_u(), core.active.settle_eps_v());
 }
 
-bool QuietEvolve::pays() {
-  State& s = core_.s;
-  if (s.work.slip_starts > slip_starts_seen_) ++s.work.slip_events;
-  slip_starts_seen_ = s.work.slip_starts;
+bool QuietEvolve::pays() const {
   const double t_event = std::min(core_.active.next_real(), core_.t_end);
   return core_.clock.first_at_or_after(t_event) - core_.clock.index() >= kMinSamples;
 }

@@ -16,14 +16,13 @@ namespace sb::event_detail {
 class QuietEvolve {
  public:
   explicit QuietEvolve(EventCore& core);
-  // At a turn of the driver with nothing sliding: the slip event that just ended is counted (the
-  // work profile's unit, once), and whether a quiet phase pays from here. Its set-up and its
+  // At a turn of the driver with nothing sliding: whether a quiet phase pays from here. Its set-up and its
   // threshold search visit the whole chain, while the active set serves the same stretch for
   // what moves; so a phase is begun only when at least kMinSamples samples are due before the
   // active set's earliest real event (which no quiet phase outlasts). Measured among 0, 4, 16
   // and 64 (paper/choices.md, 'When a quiet phase is begun').
   static constexpr long kMinSamples = 64;
-  bool pays();
+  bool pays() const;
   // The phase from s.t to its first threshold crossing, switched there. False when the observer
   // stopped the run inside it (the state is then exact at its last sample).
   bool phase();
@@ -46,7 +45,6 @@ class QuietEvolve {
   State sample_;                 // the state at a sample served from the closed form
   std::vector<double> fa_, fb_;  // affine contact forces a + b t once the phase's modes died
   bool affine_ready_ = false;
-  std::int64_t slip_starts_seen_ = 0;  // s.work.slip_starts at the last turn with nothing sliding
 };
 
 }  // namespace sb::event_detail

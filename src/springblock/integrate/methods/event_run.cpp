@@ -19,12 +19,20 @@ bool EventRun::exact_now() {
   return fits;
 }
 
+void EventRun::close_slip_event() {
+  WorkProfile& w = core_.s.work;
+  if (w.slip_starts > slip_starts_seen_) ++w.slip_events;
+  slip_starts_seen_ = w.slip_starts;
+}
+
 template <bool Coupled, bool Damped>
 void EventRun::run() {
   State& s = core_.s;
   core_.begin();
   while (s.t < core_.t_end && !core_.obs.wants_stop()) {
-    if (quiet_ && core_.sw.n_sliding() == 0 && quiet_->pays()) {
+    const bool lull = quiet_ && core_.sw.n_sliding() == 0;
+    if (lull) close_slip_event();
+    if (lull && quiet_->pays()) {
       if (!quiet_->phase()) return;  // the observer stopped the run inside it; its state is exact
     } else if (core_.active.stepped().empty()) {
       core_.jump();

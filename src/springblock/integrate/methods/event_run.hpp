@@ -33,6 +33,9 @@ class EventRun {
   // Whether the exact stepper moves the stepped runs, decided once per epoch: while no stepped
   // run is longer than exact_max_run.
   bool exact_now();
+  // The first turn with nothing sliding after something slid closes a slip event (the work
+  // profile's unit), whether or not a quiet phase begins there.
+  void close_slip_event();
 
   EventCore core_;
   std::unique_ptr<QuietEvolve> quiet_;  // with fast-forward
@@ -40,6 +43,7 @@ class EventRun {
   SteppedEvolve stepped_;
   std::int64_t mode_at_ = -1;  // the epoch exact_mode_ was decided in
   bool exact_mode_ = false;
+  std::int64_t slip_starts_seen_ = 0;  // s.work.slip_starts at the last turn with nothing sliding
 };
 
 }  // namespace sb::event_detail
