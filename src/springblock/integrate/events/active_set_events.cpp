@@ -96,12 +96,12 @@ void ActiveSet::finish_events(const Chain& c, const State& s) {
 
 // A search of block i reads its own run or the modal or settled runs beside it, and its
 // neighbours; only a switch in those blocks or at those runs' borders changes them, and that
-// searches i again. So the
-// search need go no further than the earliest real event among them (rechecks are not events:
-// each is at least its time, and two rechecks limited by each other would not progress). With
-// every block of the chain as the limit, a long chain's searches were cut at events far away and
-// resumed from scratch, a cost that grew with N. A stepped run among them or beside them can
-// switch at any step without an entry in the queue: then the chain's earliest real event.
+// searches i again. So the search need go no further than the earliest real event among them
+// (rechecks are not events: each is at least its time, and two rechecks limited by each other
+// would not progress). With the whole chain's earliest event as the limit, a long chain's searches
+// would be cut at events far away and resumed from scratch, a cost growing with N. A stepped run
+// among them or beside them can switch at any step without an entry in the queue: then the
+// chain's earliest real event.
 double ActiveSet::local_limit(int i) const {
   double t = kInf;
   bool unknown = false;  // a stepped run can switch a block at any step, with no entry here

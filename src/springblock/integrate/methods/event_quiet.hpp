@@ -16,11 +16,11 @@ namespace sb::event_detail {
 class QuietEvolve {
  public:
   explicit QuietEvolve(EventCore& core);
-  // At a turn of the driver with nothing sliding: whether a quiet phase pays from here. Its set-up and its
-  // threshold search visit the whole chain, while the active set serves the same stretch for
-  // what moves; so a phase is begun only when at least kMinSamples samples are due before the
-  // active set's earliest real event (which no quiet phase outlasts). Measured among 0, 4, 16
-  // and 64 (paper/choices.md, 'When a quiet phase is begun').
+  // At a turn of the driver with nothing sliding: whether a quiet phase pays from here. Its
+  // set-up and its threshold search visit the whole chain, while the active set serves the same
+  // stretch for what moves; so a phase is begun only when at least kMinSamples samples are due
+  // before the active set's earliest real event (which no quiet phase outlasts). Measured among
+  // 0, 4, 16 and 64 (paper/choices.md, 'When a quiet phase is begun').
   static constexpr long kMinSamples = 64;
   bool pays() const;
   // The phase from s.t to its first threshold crossing, switched there. False when the observer
