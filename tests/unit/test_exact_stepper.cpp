@@ -88,6 +88,55 @@ TEST(ExactStepper, AgreesWithTightSteppingToTheFirstPeak) {
   }
 }
 
+TEST(ExactStepper, RunsOnTheirOwnClocksMeetTheReference) {
+  // A longer chain slips in several places at once: each group of runs steps on its own clock,
+  // keeps what its screen found ahead across switches elsewhere, and is screened afresh when a
+  // switch renews a block its screen reads (ExactEvolve::Group). A group kept when it should have
+  // been renewed misses or delays a crossing, and every later instant moves.
+  for (const char* pattern : {"smooth", "periodic:4,4", "hierarchical:12,3,1"}) {
+    const sb::Scene sc = small_scene(400, pattern, 2.0, true);
+    sb::EventDriven exact(1e-8, true), ref = reference();
+    const Outcome a = run(sc, exact), b = run(sc, ref);
+    std::printf("%s N=400: exact mu_s %.12f (%zu instants) | dopri5 1e-12 mu_s %.12f\n", pattern, a.mu_s,
+                a.log.size(), b.mu_s);
+    ASSERT_EQ(a.log.size(), b.log.size()) << pattern;
+    ASSERT_GE(a.log.size(), 100u) << pattern;
+    for (std::size_t i = 0; i < a.log.size(); ++i)
+      EXPECT_NEAR(a.log[i], b.log[i], 1e-8 * b.log[i]) << pattern << " instant " << i;
+    EXPECT_NEAR(a.mu_s, b.mu_s, 1e-6) << pattern;
+  }
+}
+
+TEST(ExactStepper, AGroupKeepsItsClockOnlyWhileWhatItsScreenReadsStands) {
+  // A group keeps its screen across a switch elsewhere unless the classification renewed a block
+  // it reads; the audit compares every kept screen with the one the classification would build
+  // and throws at a mismatch. Modal runs of up to 8 blocks beside the stepped ones make the
+  // renewal happen in this scene (one group in its first 2 repetitions); a stepper that kept that
+  // group reads a neighbour's old record, and results move (mu_d 0.54623 -> 0.54602 in the
+  // first repetition).
+  sb::Scene sc;  // the paper's chain (L_x = 4 cm) with 400 blocks, seed 1, the default run length
+  sc.geometry.N = 400;
+  sc.pattern = sb::parse_pattern("hierarchical:12,3,1");
+  sc.seed = 1;
+  sb::ClockAudit audit;
+  long renewed = 0, kept = 0;
+  for (int rep = 0; rep < 2; ++rep) {
+    const sb::Chain c = sb::build_chain(sc, rep);
+    sb::State s = sb::State::at_rest(c);
+    sb::FrictionObserverConfig cfg;
+    cfg.F_load = c.F_load;
+    sb::FrictionObserver obs(cfg);
+    sb::EventDriven e(1e-8, true);
+    e.set_modal_max_run(8);
+    e.set_clock_audit(&audit);
+    EXPECT_NO_THROW(e.run(c, s, sc.duration(), sc.run.sample_dt_s, obs));
+  }
+  renewed = audit.renewed, kept = audit.kept;
+  std::printf("groups kept %ld, renewed by their surroundings %ld\n", kept, renewed);
+  EXPECT_GT(kept, 1000);
+  EXPECT_GE(renewed, 1);
+}
+
 TEST(ExactStepper, LongRunsFallBackToDormandPrince) {
   // With exact_max_run = 3 every run of four or more blocks is stepped by Dormand-Prince and the
   // shorter ones move by their modes, switching between the two as runs grow and split; the

@@ -59,6 +59,7 @@ bool ActiveSet::settled_now(const State& s, BlockRange r) const {
 
 // From scratch: every run is new, every modal run projected, every event time computed.
 void ActiveSet::rebuild(const Chain& c, const State& s) {
+  ++work_.classifications;
   for (const Run& r : runs_)
     if (r.kind == kSettled) drop_old(r);
   runs_.clear();

@@ -65,6 +65,13 @@ class ActiveSet {
   // touched_list the same blocks (Switching::touched(), touched_list()).
   void update(const Chain& c, const State& s, const std::uint8_t* touched, const std::vector<int>& touched_list);
 
+  // What the last classification (rebuild or update) may have changed: the blocks whose event
+  // time it renewed, in block order (every block after a rebuild). A block's own kind or run, or
+  // a neighbour's, can change only where it is listed (collect_candidates). And the number of
+  // classifications so far, to tell whether the list is new.
+  const std::vector<int>& renewed() const { return work_.cand; }
+  std::int64_t classifications() const { return work_.classifications; }
+
   // Runs stepped by Dormand-Prince, in block order.
   const std::vector<BlockRange>& stepped() const { return list_.stepped; }
   // Blocks whose events the step's dense output must be searched for: every sliding block and
@@ -247,6 +254,7 @@ class ActiveSet {
     std::vector<Run> found;           // the runs found in one region
     std::vector<int> visit;           // a copy of list_.live to walk while assign() edits it
     std::vector<std::pair<double, int>> due;  // retime_grooves: settling entries taken off
+    std::int64_t classifications = 0;         // rebuilds and updates so far (renewed())
   };
   int N() const { return static_cast<int>(kind_.size()); }
 

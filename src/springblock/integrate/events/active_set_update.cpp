@@ -19,6 +19,7 @@ namespace sb::event_detail {
 
 void ActiveSet::update(const Chain& c, const State& s, const std::uint8_t* touched,
                        const std::vector<int>& touched_list) {
+  ++work_.classifications;
   clear_fresh();
   find_regions(c, s, touched_list);
   for (const BlockRange& region : work_.regions) renew_region(c, s, touched, region);

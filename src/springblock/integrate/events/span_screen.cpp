@@ -45,22 +45,43 @@ bool hermite_positive(double g0, double d0, double g1, double d1, double h, doub
 }  // namespace
 
 SpanScreen::SpanScreen(const Chain& c)
-    : v_(c.v_slider), eps_v_(kStopMargin * c.v_slider) {}
+    : v_(c.v_slider), eps_v_(kStopMargin * c.v_slider), N_(c.N) {}
 
-void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active) {
+SpanScreen::Side SpanScreen::side_of(const SpanModes& spans, const ActiveSet& active, int j) const {
+  if (j < 0 || j >= N_) return kNone;
+  if (spans.holds(j)) return kSpan;
+  if (active.kind(j) == ActiveSet::kSettled) return kSettled;
+  return active.kind(j) == ActiveSet::kModal ? kModal : kFixed;
+}
+
+std::int64_t SpanScreen::record_of(const SpanModes& spans, Side side, int j) {
+  return side == kSettled || side == kModal ? spans.store().run(j).id : -1;
+}
+
+bool SpanScreen::current(const State& s, const SpanModes& spans, const ActiveSet& active, const Watch& w) const {
+  for (const Fn& f : w.fns_) {
+    if (s.dir[f.block] != f.dir) return false;
+    if (f.dir != 0) continue;
+    for (int side = 0; side < 2; ++side) {
+      const int j = side == 0 ? f.block - 1 : f.block + 1;
+      const Side now = side_of(spans, active, j);
+      if (now != f.side[side] || record_of(spans, now, j) != f.run[side]) return false;
+    }
+  }
+  return true;
+}
+
+void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active, int k0,
+                         int k1, Watch& w) const {
+  std::vector<Fn>& fns_ = w.fns_;
   fns_.clear();
   const int N = c.N;
-  auto side_of = [&](int j) {
-    if (j < 0 || j >= N) return kNone;
-    if (spans.holds(j)) return kSpan;
-    if (active.kind(j) == ActiveSet::kSettled) return kSettled;
-    return active.kind(j) == ActiveSet::kModal ? kModal : kFixed;
-  };
   // A stuck block between two stepped runs borders both: it is listed once (the runs come in
   // block order, so it is the last one listed).
   auto add_stuck = [&](int j) {
     if (j < 0 || j >= N || (!fns_.empty() && fns_.back().block == j)) return;
-    Fn f{j, 0, {side_of(j - 1), side_of(j + 1)}, {}, {}, 0, 0, 0};
+    const Side left = side_of(spans, active, j - 1), right = side_of(spans, active, j + 1);
+    Fn f{j, 0, {left, right}, {}, {}, 0, 0, 0, {record_of(spans, left, j - 1), record_of(spans, right, j + 1)}};
     for (int side = 0; side < 2; ++side) {
       const int nb = side == 0 ? j - 1 : j + 1;
       if (f.side[side] == kNone) continue;
@@ -71,17 +92,18 @@ void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans,
     f.start.g = cheap(c, s, spans, active, f, s.t, false);
     fns_.push_back(f);
   };
-  for (const BlockRange& r : spans.spans()) {
+  for (int k = k0; k < k1; ++k) {
+    const BlockRange& r = spans.spans()[k];
     add_stuck(r.lo - 1);
     for (int i = r.lo; i < r.hi; ++i) {
       if (s.dir[i] == 0) continue;
-      Fn f{i, s.dir[i], {kNone, kNone}, {}, {}, spans.row_bound(i, 3), spans.row_bound(i, 5), 0};
+      Fn f{i, s.dir[i], {kNone, kNone}, {}, {}, spans.row_bound(i, 3), spans.row_bound(i, 5), 0, {-1, -1}};
       f.start.g = cheap(c, s, spans, active, f, s.t, false);
       fns_.push_back(f);
     }
     add_stuck(r.hi);
   }
-  root_.resize(fns_.size());
+  w.root_.resize(fns_.size());
 }
 
 double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active,
@@ -120,45 +142,46 @@ double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans,
   return c.f_static[j] - std::fabs(F) - f.spread;
 }
 
-double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, double h,
-                          double window) {
+double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, Watch& w,
+                          double t0, double h, double window) {
+  std::vector<Fn>& fns_ = w.fns_;
+  std::vector<double>& root_ = w.root_;
   double best = kInf;
   const double chord = 0.125 * h * h;
   for (std::size_t k = 0; k < fns_.size(); ++k) {
     Fn& f = fns_[k];
-    f.end.g = cheap(c, s, spans, active, f, s.t + h, true);
+    f.end.g = cheap(c, s, spans, active, f, t0 + h, true);
     f.end.known = false;
     root_[k] = kInf;
     if (f.end.g > 0 && std::min(f.start.g, f.end.g) - f.M2 * chord > 0) continue;
     if (f.end.g > 0) {
-      if (!f.start.known) f.start.d = cheap(c, s, spans, active, f, s.t, false, true), f.start.known = true;
-      f.end.d = cheap(c, s, spans, active, f, s.t + h, true, true), f.end.known = true;
+      if (!f.start.known) f.start.d = cheap(c, s, spans, active, f, t0, false, true), f.start.known = true;
+      f.end.d = cheap(c, s, spans, active, f, t0 + h, true, true), f.end.known = true;
       if (hermite_positive(f.start.g, f.start.d, f.end.g, f.end.d, h, f.M4)) continue;
     }
     ++polynomial_searches;
     // A root later than best + window h can neither be the event nor join it (the final best is
     // no later than this one): exact_root does not refine it.
-    root_[k] = exact_root(c, s, spans, active, f, h, best + window * h);
+    root_[k] = exact_root(c, s, spans, active, f, t0, h, best + window * h);
     best = std::min(best, root_[k]);
   }
-  hits_.clear();
+  w.hits_.clear();
   if (best <= h)
     for (std::size_t k = 0; k < fns_.size(); ++k)
-      if (root_[k] <= best + window * h) hits_.push_back(fns_[k].block);
+      if (root_[k] <= best + window * h) w.hits_.push_back(fns_[k].block);
   return best;
 }
 
-void SpanScreen::accept() {
-  for (Fn& f : fns_) f.start = f.end;
+void SpanScreen::accept(Watch& w) {
+  for (Fn& f : w.fns_) f.start = f.end;
 }
 
-// g over the step as a polynomial in tau = t - s.t: the rows' Taylor polynomials combined as the
+// g over the step as a polynomial in tau = t - t0: the rows' Taylor polynomials combined as the
 // cheap form combines their values.
 double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, const Fn& f,
-                              double h, double after) {
+                              double t0, double h, double after) {
   double row[D + 2], g[D + 1];
   const int j = f.block;
-  const double t0 = s.t;
   if (f.dir != 0) {
     spans.row_taylor(j, row);
     for (int k = 0; k <= D; ++k) g[k] = f.dir * ((k + 1) * row[k + 1]);

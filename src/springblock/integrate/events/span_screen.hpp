@@ -19,6 +19,8 @@
 //     (first_root.hpp). A stuck block's |F| is searched as F reaching +f_static and -f_static.
 // The earliest root, and every block whose root lies within `window` (a fraction of the step)
 // of it, make the step's event, as for the Dormand-Prince search (event_search.hpp).
+// The functions are kept per clock (SpanScreen::Watch): the runs that step together, from their
+// own time t0, which may lie before the chain's.
 #include <cstdint>
 #include <vector>
 
@@ -31,24 +33,6 @@
 namespace sb::event_detail {
 
 class SpanScreen {
- public:
-  explicit SpanScreen(const Chain& c);
-
-  // The event functions of the runs in `spans` and their values at its current time (after
-  // every projection).
-  void rebuild(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active);
-  // After spans.advance(h) from s.t: the earliest event in (0, h] as a time after s.t, or a value
-  // > h if none; hits() then lists its blocks.
-  double locate(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, double h,
-                double window = 1e-12);
-  // The step was taken: each function's value at its end is its value at the next start.
-  void accept();
-  const std::vector<int>& hits() const { return hits_; }
-
-  // Diagnostics: steps whose cheap test failed for some function, and polynomial searches.
-  long polynomial_searches = 0;
-
- private:
   static constexpr int D = SpanModes::kDegree;
   enum Side : std::uint8_t { kNone, kSpan, kSettled, kModal, kFixed };
   struct Value {
@@ -62,20 +46,56 @@ class SpanScreen {
     Value start, end;  // g (or its cheap lower bound) at the step's start and end, and its slope
     double M2, M4;    // bounds on |g''| and |g''''| (of the part that is not a modal bound)
     double spread;    // the spring to a modal neighbour times its bound (0 without one)
+    std::int64_t run[2];  // the store's record holding a settled or modal neighbour (-1: none)
   };
-  // g's cheap form at the step's start (end = false) or end, and its slope (slope = true).
+
+ public:
+  explicit SpanScreen(const Chain& c);
+
+  // The event functions of the runs on one clock, and the blocks of its last event.
+  class Watch {
+   public:
+    const std::vector<int>& hits() const { return hits_; }
+
+   private:
+    friend class SpanScreen;
+    std::vector<Fn> fns_;
+    std::vector<double> root_;
+    std::vector<int> hits_;
+  };
+
+  // The event functions of runs k0 .. k1 - 1 of `spans` and their values at s.t, which is their
+  // current time (after they were projected or brought there).
+  void rebuild(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active, int k0, int k1,
+               Watch& w) const;
+  // After spans.advance(h) of w's runs from their time t0: the earliest event in (0, h] as an
+  // offset from t0, or a value > h if none; w.hits() then lists its blocks.
+  double locate(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, Watch& w, double t0,
+                double h, double window = 1e-12);
+  // The step was taken: each function's value at its end is its value at the next start.
+  static void accept(Watch& w);
+  // Whether w's functions are still those rebuild would make now: each block's direction, and
+  // a stuck block's neighbours' kinds and records (a check for the tests, ClockAudit).
+  bool current(const State& s, const SpanModes& spans, const ActiveSet& active, const Watch& w) const;
+
+  // Diagnostics: steps whose cheap test failed for some function, and polynomial searches.
+  long polynomial_searches = 0;
+
+ private:
+  // g's cheap form at the step's start (end = false) or end, time t, and its slope (slope = true).
   double cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active, const Fn& f,
                double t, bool end, bool slope = false) const;
-  // The first root of f in [0, h] from its polynomial (+inf if none, or if it is surely later than
-  // `after`: such a root is not refined).
+  // The first root of f in [0, h] from its polynomial about t0 (+inf if none, or if it is surely
+  // later than `after`: such a root is not refined).
   double exact_root(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, const Fn& f,
-                    double h, double after);
+                    double t0, double h, double after);
   double poly_root(const double* g, double t0, double h, double after) const;
+  // What a neighbour j of a stuck block is to the screen, and the record holding it.
+  Side side_of(const SpanModes& spans, const ActiveSet& active, int j) const;
+  static std::int64_t record_of(const SpanModes& spans, Side side, int j);
 
   double v_, eps_v_;
-  std::vector<Fn> fns_;
-  std::vector<double> root_;
-  std::vector<int> hits_;
+  int N_;
   BernsteinRoots<D> bern_;
 };
 

@@ -13,22 +13,31 @@ constexpr int kSpanResync = 256;
 }  // namespace
 
 SpanModes::SpanModes(const Chain& c, RunStore& store)
-    : H_(store.shapes().step()), store_(store), span_of_(c.N, -1), du_(c.N), dv_(c.N), now_{0, Coords(c.N)},
-      end_{0, Coords(c.N)} {}
+    : H_(store.shapes().step()),
+      store_(store),
+      span_of_(c.N, -1),
+      du_(c.N),
+      dv_(c.N),
+      buf_{Coords(c.N), Coords(c.N)},
+      scratch_(c.N) {}
 
 void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockRange>& spans,
-                        const std::int64_t* switched_at, std::int64_t since) {
+                        const std::int64_t* switched_at, std::int64_t since, bool keep_any) {
   // Slots are the blocks' own indices, so a kept run's modes stay where they are.
   kept_.swap(spans_);
   spans_.clear();
-  const bool current = now_.t == s.t;
   const int N = static_cast<int>(span_of_.size());
   for (const BlockRange& r : spans) {
     const int k = span_of_[r.lo];
-    bool keep = current && k >= 0 && kept_[k].lo == r.lo && kept_[k].hi == r.hi && mine(kept_[k]) != nullptr;
+    bool keep = keep_any && k >= 0 && kept_[k].lo == r.lo && kept_[k].hi == r.hi && mine(kept_[k]) != nullptr;
     for (int i = std::max(r.lo - 1, 0); keep && i < std::min(r.hi + 1, N); ++i) keep = switched_at[i] <= since;
-    if (keep) spans_.push_back(kept_[k]), spans_.back().fresh = false, kept_[k].id = -1;
-    else spans_.push_back({r.lo, r.hi, 0, 0, false, true});
+    if (keep) {
+      spans_.push_back(kept_[k]);
+      spans_.back().fresh = false, spans_.back().kept = true;
+      kept_[k].id = -1;
+    } else {
+      spans_.push_back({r.lo, r.hi, 0, 0, false, true, false, 0, s.t, s.t});
+    }
   }
   // The runs let go leave the store (kept ones were marked above).
   for (const Span& sp : kept_) {
@@ -38,7 +47,6 @@ void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockR
   for (std::size_t k = 0; k < spans_.size(); ++k)
     std::fill(span_of_.begin() + spans_[k].lo, span_of_.begin() + spans_[k].hi, static_cast<int>(k));
   ranges_ = spans;
-  now_.t = s.t;
   for (Span& sp : spans_)
     if (sp.fresh) project_one(c, s, sp);
 }
@@ -55,25 +63,27 @@ void SpanModes::project_one(const Chain& c, const State& s, Span& sp) {
   sp.id = rec.id;
   sp.grooves = true;
   for (int i = sp.lo; i < sp.hi && sp.grooves; ++i) sp.grooves = !c.contact[i];
-  std::copy(store_.q0() + sp.lo, store_.q0() + sp.hi, now_.x.q.begin() + sp.lo);
-  std::copy(store_.p0() + sp.lo, store_.p0() + sp.hi, now_.x.p.begin() + sp.lo);
+  Coords& now = at(sp, false);
+  std::copy(store_.q0() + sp.lo, store_.q0() + sp.hi, now.q.begin() + sp.lo);
+  std::copy(store_.p0() + sp.lo, store_.p0() + sp.hi, now.p.begin() + sp.lo);
   const int n = sp.hi - sp.lo;
   for (int row = 0; row < n; ++row) {
     const int i = sp.lo + row;
     du_[i] = 0.0, dv_[i] = 0.0;
     if (row != 0 && row != n - 1 && s.dir[i] == 0) continue;
-    du_[i] = s.u[i] - store_.row_u(i, s.t, now_.x.q.data());
-    dv_[i] = s.v[i] - store_.row_v(i, now_.x.p.data());
+    du_[i] = s.u[i] - store_.row_u(i, s.t, now.q.data());
+    dv_[i] = s.v[i] - store_.row_v(i, now.p.data());
   }
 }
 
-void SpanModes::advance(double h) {
-  end_.t = now_.t + h;
-  double* q = now_.x.q.data();
-  double* p = now_.x.p.data();
-  double* qn = end_.x.q.data();
-  double* pn = end_.x.p.data();
-  for (Span& sp : spans_) {
+void SpanModes::advance(int k0, int k1, double h) {
+  for (int k = k0; k < k1; ++k) {
+    Span& sp = spans_[k];
+    sp.t1 = sp.t0 + h;
+    const double* q = at(sp, false).q.data();
+    const double* p = at(sp, false).p.data();
+    double* qn = at(sp, true).q.data();
+    double* pn = at(sp, true).p.data();
     const RunStore::Run& rec = store_.run(sp.lo);
     const RunShape& sh = *rec.shape;
     if (h == H_ && sp.since + 1 < kSpanResync) {
@@ -82,30 +92,43 @@ void SpanModes::advance(double h) {
       ++sp.since;
     } else {
       // A step off the grid, or the restart: from the projection itself when it is due.
-      if (h == H_) store_.coords(rec, end_.t, qn, pn);
+      if (h == H_) store_.coords(rec, sp.t1, qn, pn);
       else sh.evolve(q + sp.lo, p + sp.lo, h, qn + sp.lo, pn + sp.lo);
       sp.since = 0;
     }
   }
 }
 
-void SpanModes::take(double t) {
-  std::swap(now_.x, end_.x);
-  now_.t = t;
-  for (Span& sp : spans_) sp.fresh = false;  // the rows have left the projected state
+void SpanModes::take(int k0, int k1, double t) {
+  for (int k = k0; k < k1; ++k) {
+    Span& sp = spans_[k];
+    sp.cur = 1 - sp.cur;
+    sp.t0 = sp.t1 = t;
+    sp.fresh = false;  // the rows have left the projected state
+  }
 }
 
-void SpanModes::take_at(double tau, double t) {
-  for (const Span& sp : spans_)
-    store_.run(sp.lo).shape->evolve(now_.x.q.data() + sp.lo, now_.x.p.data() + sp.lo, tau, end_.x.q.data() + sp.lo,
-                                    end_.x.p.data() + sp.lo);
-  take(t);
+void SpanModes::take_at(int k0, int k1, double tau, double t) {
+  for (int k = k0; k < k1; ++k) {
+    Span& sp = spans_[k];
+    store_.run(sp.lo).shape->evolve(at(sp, false).q.data() + sp.lo, at(sp, false).p.data() + sp.lo, tau,
+                                    at(sp, true).q.data() + sp.lo, at(sp, true).p.data() + sp.lo);
+  }
+  take(k0, k1, t);
+}
+
+void SpanModes::bring(int k0, int k1, double t) {
+  for (int k = k0; k < k1; ++k)
+    if (spans_[k].t0 != t) take_at(k, k + 1, t - spans_[k].t0, t);
 }
 
 void SpanModes::forget() {
-  for (const Span& sp : spans_)
+  for (const Span& sp : spans_) {
     if (mine(sp) != nullptr) store_.drop(sp.lo);
-  now_.t = std::numeric_limits<double>::quiet_NaN();
+    std::fill(span_of_.begin() + sp.lo, span_of_.begin() + sp.hi, -1);
+  }
+  spans_.clear();
+  ranges_.clear();
 }
 
 }  // namespace sb::event_detail

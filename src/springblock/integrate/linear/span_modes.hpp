@@ -4,19 +4,23 @@
 // While something slides, a run the active set steps (one holding a sliding block, or a
 // grooves-only run still ringing) is, between two switches, a linear system with constant
 // forcing (the equation in run_shape.hpp). Its motion is its record in the run store (its affine
-// path A + B t and its normal modes, each a damped oscillator in closed form, run_store.hpp). Nothing is approximated, so
-// there is no error control and no step is ever rejected: the runs advance together by steps of
-// at most H, 0.75 rad of the fastest rate any run of the chain can have. H
-// only sets how often the event screen (events/span_screen.hpp) looks: a full step moves each
-// mode by its exact transition over H, computed once per run shape; a shorter one (cut to a
-// sample, a closed-form event or the end of the run) and the move to an event inside a step use
-// the closed form itself. The grid recurrence restarts from the closed form every kResync steps,
-// so its round-off never accumulates.
+// path A + B t and its normal modes, each a damped oscillator in closed form, run_store.hpp).
+// Nothing is approximated, so there is no error control and no step is ever rejected. The runs
+// keep their own clocks: stuck blocks cut the chain into independent systems, so a run steps
+// only when the event screen (events/span_screen.hpp) has looked as far as it can, not when a
+// run elsewhere stops at an event. The stepper's owner groups the runs that share a stuck border
+// (whose force reads both) on one clock and says which group moves; a group steps by at most H,
+// 0.75 rad of the fastest rate any run of the chain can have. H only sets how often the screen
+// looks: a full step moves each mode by its exact transition over H, computed once per run
+// shape; the move to an event inside a step, or to any other time, uses the closed form itself.
+// The grid recurrence restarts from the closed form every kResync steps, so its round-off never
+// accumulates.
 //
-// The state lives in the modes: the stepper keeps each run's coordinates at its current time and
-// at the end of the step it is taking; the blocks' u and v in the chain's State are written only
-// when asked (write), at switches and samples. The bounds on a row's derivatives are the
-// store's, taken at the projection, which hold until the next one (row_bound).
+// The state lives in the modes: each run keeps its coordinates at its current time t0 and at
+// the end t1 of the step it is taking; the blocks' u and v in the chain's State are written only
+// when asked (write, at a given time), at switches and samples. The bounds on a row's
+// derivatives are the store's, taken at the projection, which hold until the next one
+// (row_bound).
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -36,51 +40,65 @@ class SpanModes {
   SpanModes(const Chain& c, RunStore& store);
   // The longest step (RunShapes::step_for).
   double H() const { return H_; }
+  const RunStore& store() const { return store_; }
 
   // After a classification at s.t: the runs in `spans`. A run the previous projection had too is
-  // kept as it is (its modes are exact at s.t) if its modes are at s.t, its record is still the
-  // one it projected, and none of its blocks nor the blocks beside it switched since (switched_at:
-  // per block, the epoch of its last switch; since: the epoch of the previous projection); every
-  // other run is projected afresh from s.u and s.v.
+  // kept as it is, on its own clock (its modes are exact at its t0 <= s.t), if keep_any (nothing
+  // but this stepper moved the chain since the last projection), its record is still the one it
+  // projected, and none of its blocks nor the blocks beside it switched since (switched_at: per
+  // block, the epoch of its last switch; since: the epoch of the previous projection); every
+  // other run is projected afresh from s.u and s.v, with t0 = t1 = s.t.
   void project(const Chain& c, const State& s, const std::vector<BlockRange>& spans, const std::int64_t* switched_at,
-               std::int64_t since);
-  // The modes at now() + h into the step's end, from those at now(): the grid transition for
-  // h == H(), the closed form otherwise.
-  void advance(double h);
-  // The step's end becomes the current state, at time t (the caller's clock for now() + h).
-  void take(double t);
-  // The current state moved by tau (0 <= tau) by the closed form, at time t.
-  void take_at(double tau, double t);
-  double now() const { return now_.t; }
+               std::int64_t since, bool keep_any);
+  // Runs k0 .. k1 - 1 of spans() (one clock, t0): their modes at t0 + h into the step's end,
+  // the grid transition for h == H(), the closed form otherwise.
+  void advance(int k0, int k1, double h);
+  // Their step's end becomes their current state, at time t (the caller's clock for t0 + h).
+  void take(int k0, int k1, double t);
+  // Their current state moved by tau (0 <= tau) by the closed form, at time t.
+  void take_at(int k0, int k1, double tau, double t);
+  // Their current state moved to time t >= t0 (nothing if they are there).
+  void bring(int k0, int k1, double t);
+  // Whether run k was kept by the last projection (not projected afresh), and its current time.
+  bool kept(int k) const { return spans_[k].kept; }
+  double t0(int k) const { return spans_[k].t0; }
+  // Runs are held (projected and not forgotten since).
+  bool live() const { return !spans_.empty(); }
 
-  // Write the current u, v of every run's blocks (ends_only: the two end rows of each run,
-  // which are all a contact block's force reads).
-  void write(double* u, double* v, bool ends_only);
+  // Write the u, v at time t (at or after each run's t0) of every run's blocks (ends_only: the
+  // two end rows of each run, which are all a contact block's force reads).
+  void write(double t, double* u, double* v, bool ends_only);
   // The same for the runs a switch of the given blocks reads: those holding or beside one of
   // them, and every grooves-only run (the active set judges whether it has rung down).
-  void write_near(const std::vector<int>& blocks, double* u, double* v);
+  void write_near(double t, const std::vector<int>& blocks, double* u, double* v);
   // The same for the runs none of whose blocks, nor the blocks beside them, switched after epoch
   // `since` (switched_at: per block, the epoch of its last switch). forget() then lets the runs
   // go: the next projection keeps none.
-  void write_untouched(const std::int64_t* switched_at, std::int64_t since, double* u, double* v);
+  void write_untouched(double t, const std::int64_t* switched_at, std::int64_t since, double* u, double* v);
   void forget();
 
-  // Row evaluations of block i, which must be in a run: at the current state (end = false) or
-  // at the step's end (end = true, time now() + h of the last advance).
+  // Row evaluations of block i, which must be in a run: at its run's current state (end = false,
+  // time t0) or at its step's end (end = true, time t1 of the last advance).
   bool holds(int i) const { return span_of_[i] >= 0; }
   // The run holding block i was projected by the last project() and has not moved since: its
-  // rows the screen reads (end rows and sliding blocks' rows) are then, at now(), the state's u
+  // rows the screen reads (end rows and sliding blocks' rows) are then, at its t0, the state's u
   // and v, which their offsets make them: a + (x - a) is x exactly when a and x are within a
   // factor 2 (x - a is then exact), and within an ulp of x otherwise (a row crossing zero), so
   // the screen may read the state instead.
   bool fresh(int i) const { return spans_[span_of_[i]].fresh; }
-  double u(int i, bool end) const { return store_.row_u(i, at(end).t, at(end).x.q.data()) + du_[i]; }
-  double v(int i, bool end) const { return store_.row_v(i, at(end).x.p.data()) + dv_[i]; }
-  double a(int i, bool end) const { return store_.row_a(i, at(end).x.q.data(), at(end).x.p.data()); }
+  double u(int i, bool end) const {
+    const Span& sp = spans_[span_of_[i]];
+    return store_.row_u(i, end ? sp.t1 : sp.t0, at(sp, end).q.data()) + du_[i];
+  }
+  double v(int i, bool end) const { return store_.row_v(i, at(spans_[span_of_[i]], end).p.data()) + dv_[i]; }
+  double a(int i, bool end) const {
+    const Coords& x = at(spans_[span_of_[i]], end);
+    return store_.row_a(i, x.q.data(), x.p.data());
+  }
   // A bound on the order-th derivative of u of block i (order 2 to 5) from the projection on, for
   // the end rows of a run and its sliding blocks (RunStore::bound).
   double row_bound(int i, int order) const { return store_.bound(i, order); }
-  // u of block i about now() as a polynomial in tau: c[j], j = 0 .. kDegree + 1 (exact to
+  // u of block i about its run's t0 as a polynomial in tau: c[j], j = 0 .. kDegree + 1 (exact to
   // round-off for tau <= H: the remainder is below 0.75^(kDegree+2) / (kDegree+2)! of the
   // modes' amplitude).
   void row_taylor(int i, double* c) const;
@@ -97,7 +115,10 @@ class SpanModes {
     std::int64_t id;  // its record's serial number in the store
     int since;        // grid steps since the modes were last set from the closed form
     bool grooves;     // no contact block in it
-    bool fresh;       // projected by the last project()
+    bool fresh;       // projected by the last project() and not moved since
+    bool kept;        // carried over by the last project()
+    int cur;          // which of buf_ holds its current coordinates (the other: its step's end)
+    double t0, t1;    // the times of its current coordinates and of its step's end
   };
   void project_one(const Chain& c, const State& s, Span& sp);
   // The store's record of span sp, if it is still the one sp projected (else nullptr: another
@@ -106,8 +127,10 @@ class SpanModes {
     const RunStore::Run* r = store_.exact({sp.lo, sp.hi});
     return r != nullptr && r->id == sp.id ? r : nullptr;
   }
-  void write_rows(const Span& sp, double* u, double* v, bool ends_only = false);
-  const Moment& at(bool end) const { return end ? end_ : now_; }
+  // Its rows at time t (its coordinates moved there by the closed form into scratch_ first).
+  void write_rows(const Span& sp, double t, double* u, double* v, bool ends_only = false);
+  const Coords& at(const Span& sp, bool end) const { return buf_[end ? 1 - sp.cur : sp.cur]; }
+  Coords& at(const Span& sp, bool end) { return buf_[end ? 1 - sp.cur : sp.cur]; }
 
   double H_;
   RunStore& store_;
@@ -115,7 +138,8 @@ class SpanModes {
   std::vector<BlockRange> ranges_;
   std::vector<int> span_of_;     // block -> index in spans_ (-1: none)
   std::vector<double> du_, dv_;  // per block: the projection's round-off (project_one)
-  Moment now_, end_;             // the runs' modes now and at the end of the last advance
+  Coords buf_[2];                // per run, its current modes and those at its step's end (Span::cur)
+  Coords scratch_;               // a run's modes moved to a write's time
 };
 
 }  // namespace sb::event_detail

@@ -8,35 +8,43 @@
 namespace sb::event_detail {
 
 void SpanModes::row_taylor(int i, double* c) const {
-  store_.taylor(i, now_.t, now_.x.q.data(), now_.x.p.data(), kDegree + 1, c);
+  const Span& sp = spans_[span_of_[i]];
+  store_.taylor(i, sp.t0, at(sp, false).q.data(), at(sp, false).p.data(), kDegree + 1, c);
   c[0] += du_[i];
   c[1] += dv_[i];
 }
 
-void SpanModes::write(double* u, double* v, bool ends_only) {
+void SpanModes::write(double t, double* u, double* v, bool ends_only) {
   for (const Span& sp : spans_)
-    if (mine(sp) != nullptr) write_rows(sp, u, v, ends_only);
+    if (mine(sp) != nullptr) write_rows(sp, t, u, v, ends_only);
 }
 
 // Every row of a run, or its end rows (RunStore::write), with their offsets.
-void SpanModes::write_rows(const Span& sp, double* u, double* v, bool ends_only) {
-  store_.write(store_.run(sp.lo), now_.t, now_.x.q.data(), now_.x.p.data(), u, v, ends_only, du_.data(), dv_.data());
+void SpanModes::write_rows(const Span& sp, double t, double* u, double* v, bool ends_only) {
+  const RunStore::Run& rec = store_.run(sp.lo);
+  const Coords* x = &at(sp, false);
+  if (t != sp.t0) {
+    rec.shape->evolve(x->q.data() + sp.lo, x->p.data() + sp.lo, t - sp.t0, scratch_.q.data() + sp.lo,
+                      scratch_.p.data() + sp.lo);
+    x = &scratch_;
+  }
+  store_.write(rec, t, x->q.data(), x->p.data(), u, v, ends_only, du_.data(), dv_.data());
 }
 
-void SpanModes::write_near(const std::vector<int>& blocks, double* u, double* v) {
+void SpanModes::write_near(double t, const std::vector<int>& blocks, double* u, double* v) {
   for (const Span& sp : spans_) {
     bool near = sp.grooves;
     for (std::size_t k = 0; k < blocks.size() && !near; ++k) near = blocks[k] >= sp.lo - 1 && blocks[k] <= sp.hi;
-    if (near && mine(sp) != nullptr) write_rows(sp, u, v);
+    if (near && mine(sp) != nullptr) write_rows(sp, t, u, v);
   }
 }
 
-void SpanModes::write_untouched(const std::int64_t* switched_at, std::int64_t since, double* u, double* v) {
+void SpanModes::write_untouched(double t, const std::int64_t* switched_at, std::int64_t since, double* u, double* v) {
   for (const Span& sp : spans_) {
     bool touched = false;
     const int N = static_cast<int>(span_of_.size());
     for (int i = std::max(sp.lo - 1, 0); i < std::min(sp.hi + 1, N) && !touched; ++i) touched = switched_at[i] > since;
-    if (!touched && mine(sp) != nullptr) write_rows(sp, u, v);
+    if (!touched && mine(sp) != nullptr) write_rows(sp, t, u, v);
   }
 }
 

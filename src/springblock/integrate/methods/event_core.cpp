@@ -72,7 +72,7 @@ void EventCore::switch_now(bool bring_runs) {
   // rest itself (QuietEvolve::phase), and most switches that stop every sliding block are not
   // followed by one.
   if (bring_runs) active.materialise_near(s.t, s.u.data(), s.v.data(), sw.flagged());
-  if (sw.apply(c, s) > 0 && opt.switch_log) opt.switch_log->push_back(s.t);
+  if (sw.apply(c, s) > 0 && opt.diag.switch_log) opt.diag.switch_log->push_back(s.t);
   if (!sw.touched_list().empty()) obs.switched(c, s, sw.touched_list());
   reclassify(false);
 }

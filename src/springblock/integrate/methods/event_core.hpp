@@ -9,6 +9,7 @@
 
 #include "springblock/integrate/events/active_set.hpp"
 #include "springblock/integrate/events/switching.hpp"
+#include "springblock/integrate/methods/clock_audit.hpp"
 #include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
 #include "springblock/observe/observer.hpp"
@@ -24,7 +25,12 @@ struct EventOptions {
   int modal_max_groove;  // see EventDriven::set_modal_max_groove
   bool exact_stepper;    // the stepped runs move by their modes (span_modes.hpp), not Dormand-Prince
   int exact_max_run;     // ... while no stepped run is longer than this (Dormand-Prince otherwise)
-  std::vector<double>* switch_log;  // times of the instants with a switch (nullptr: none)
+  // Diagnostics: the times of the instants with a switch, and the exact stepper's audit
+  // (nullptr: none).
+  struct Diagnostics {
+    std::vector<double>* switch_log = nullptr;
+    ClockAudit* audit = nullptr;  // EventDriven::set_clock_audit
+  } diag;
   // What the observer reads (Observer::reads_groove_interiors, reads_only_friction), asked once:
   // an observer of contact blocks' forces only needs the groove segments' end rows at
   // quiet-phase samples (O(N) per sample instead of O(sum n^2) for long grooves), one of

@@ -19,7 +19,7 @@ void EventDriven::run(const Chain& c, State& s, double t_end, double sample_dt, 
                                        modal_max_groove_,
                                        exact_stepper_ && fast_forward_,
                                        exact_max_run_,
-                                       switch_log_,
+                                       {switch_log_, audit_},
                                        !obs.reads_groove_interiors(),
                                        obs.reads_only_friction(),
                                        fast_forward_ && obs.takes_active_forces()};

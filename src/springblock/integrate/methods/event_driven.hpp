@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "springblock/integrate/integrator.hpp"
+#include "springblock/integrate/methods/clock_audit.hpp"
 #include "springblock/run_control.hpp"
 
 namespace sb {
@@ -50,6 +51,8 @@ class EventDriven final : public Integrator {
   // The stepped runs move by their modes (exact) instead of Dormand-Prince steps while none is
   // longer than max_run blocks (only with fast-forward on).
   void set_exact_stepper(bool on, int max_run = kDefaultExactMaxRun) { exact_stepper_ = on, exact_max_run_ = max_run; }
+  // For the tests: the exact stepper's groups that keep their clocks are checked (ClockAudit).
+  void set_clock_audit(ClockAudit* audit) { audit_ = audit; }
 
  private:
   double tol_;
@@ -59,6 +62,7 @@ class EventDriven final : public Integrator {
   bool exact_stepper_ = true;
   int exact_max_run_ = kDefaultExactMaxRun;
   std::vector<double>* switch_log_ = nullptr;
+  ClockAudit* audit_ = nullptr;
 };
 
 }  // namespace sb

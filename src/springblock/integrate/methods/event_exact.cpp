@@ -1,6 +1,7 @@
 #include "springblock/integrate/methods/event_exact.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "springblock/integrate/numerics/infinity.hpp"
 
@@ -8,25 +9,73 @@ namespace sb::event_detail {
 
 ExactEvolve::ExactEvolve(EventCore& core) : core_(core), spans_(core.c, core.store), screen_(core.c) {}
 
+void ExactEvolve::mark_renewed() {
+  const ActiveSet& active = core_.active;
+  // One classification since the last projection lists what it renewed; none renewed nothing
+  // (a promotion or a retirement changes only the runs it moves, and their groups with them);
+  // after more than one (a phase of another evolve step between), nothing is known.
+  const std::int64_t since = active.classifications() - seen_;
+  seen_ = active.classifications();
+  const std::vector<int>& renewed = active.renewed();
+  for (Group& g : old_) {
+    const auto it = std::lower_bound(renewed.begin(), renewed.end(), g.lo);
+    g.stale = since > 1 || (since == 1 && it != renewed.end() && *it < g.hi);
+  }
+}
+
 void ExactEvolve::project() {
   State& s = core_.s;
   WorkTimer timer(s.work, s.work.stepping_s);
-  spans_.project(core_.c, s, core_.active.stepped(), core_.epochs.switched(), projected_at_);
+  old_.swap(groups_);
+  groups_.clear();
+  mark_renewed();
+  spans_.project(core_.c, s, core_.active.stepped(), core_.epochs.switched(), projected_at_, in_step_);
   projected_at_ = valid_at_ = core_.epochs.now();
-  screen_.rebuild(core_.c, s, spans_, core_.active);
+  const std::vector<BlockRange>& runs = spans_.spans();
+  const int n = static_cast<int>(runs.size());
+  std::size_t o = 0;  // the first old group not before the one being formed
+  for (int k0 = 0; k0 < n;) {
+    int k1 = k0 + 1;
+    while (k1 < n && runs[k1].lo == runs[k1 - 1].hi + 1) ++k1;  // a stuck block between them borders both
+    Group g;
+    g.k0 = k0, g.k1 = k1, g.t0 = g.t1 = s.t;
+    g.lo = runs[k0].lo - 1, g.hi = runs[k1 - 1].hi + 1;
+    bool same = true;  // its runs kept, and they made one group before
+    for (int k = k0; k < k1 && same; ++k) same = spans_.kept(k);
+    while (o < old_.size() && old_[o].lo < g.lo) ++o;
+    same = same && o < old_.size() && old_[o].lo == g.lo && old_[o].hi == g.hi;
+    const bool keep = same && !old_[o].stale;
+    ClockAudit* audit = core_.opt.diag.audit;
+    if (audit != nullptr) audit->take(keep, same && !keep);
+    if (keep) {
+      Group& was = old_[o];
+      if (audit != nullptr && !screen_.current(s, spans_, core_.active, was.watch))
+        throw std::logic_error("exact stepper: a group kept its clock across a change its screen reads");
+      g.t0 = was.t0, g.t1 = was.t1, g.h = was.h, g.tau = was.tau;
+      g.watch = std::move(was.watch);
+    } else {
+      spans_.bring(k0, k1, s.t);
+      screen_.rebuild(core_.c, s, spans_, core_.active, k0, k1, g.watch);
+    }
+    groups_.push_back(std::move(g));
+    k0 = k1;
+  }
   settle_ = kInf;
-  for (int k = 0; k < static_cast<int>(spans_.spans().size()); ++k)
+  for (int k = 0; k < n; ++k)
     settle_ = std::min(settle_, spans_.settled_after(k, core_.active.settle_eps_u(), core_.active.settle_eps_v()));
 }
 
 void ExactEvolve::leave() {
-  spans_.write_untouched(core_.epochs.switched(), projected_at_, core_.s.u.data(), core_.s.v.data());
+  spans_.write_untouched(core_.s.t, core_.epochs.switched(), projected_at_, core_.s.u.data(), core_.s.v.data());
   spans_.forget();
+  groups_.clear();
+  in_step_ = false;
 }
 
 void ExactEvolve::switch_now() {
+  State& s = core_.s;
   if (core_.may_go_quiet()) write(false);
-  else spans_.write_near(core_.sw.flagged(), core_.s.u.data(), core_.s.v.data());
+  else spans_.write_near(s.t, core_.sw.flagged(), s.u.data(), s.v.data());
   core_.switch_now();
 }
 
@@ -42,64 +91,87 @@ void ExactEvolve::retire() {
   else settle_ = kInf;  // not reached again before the next projection
 }
 
+void ExactEvolve::write_for_sample() {
+  State& s = core_.s;
+  if (valid()) write(core_.opt.friction_only);
+  else if (in_step()) spans_.write_untouched(s.t, core_.epochs.switched(), projected_at_, s.u.data(), s.v.data());
+}
+
+void ExactEvolve::moved_on() {
+  retire();
+  core_.promote([&] {
+    if (valid()) write(false);
+  });
+  core_.sample_if_due([&] { write_for_sample(); });
+}
+
+void ExactEvolve::step_group(Group& g) {
+  State& s = core_.s;
+  const double H = spans_.H();
+  {
+    WorkTimer timer(s.work, s.work.stepping_s);
+    if (g.h > 0) spans_.take(g.k0, g.k1, g.t1), SpanScreen::accept(g.watch);  // its clean step, reached
+    g.t0 = g.t1;
+    ++s.work.stepped_attempts;
+    for (int k = g.k0; k < g.k1; ++k) s.work.block_steps += spans_.spans()[k].size();
+    spans_.advance(g.k0, g.k1, H);
+  }
+  double tau;
+  {
+    WorkTimer timer(s.work, s.work.event_location_s);
+    tau = screen_.locate(core_.c, s, spans_, core_.active, g.watch, g.t0, H);
+  }
+  ++s.steps;
+  g.h = H, g.tau = tau;
+  g.t1 = g.t0 + (g.event() ? tau : H);
+}
+
+void ExactEvolve::take_event(Group& g, const EventCore::Stop& stop) {
+  State& s = core_.s;
+  {
+    WorkTimer timer(s.work, s.work.stepping_s);
+    ++s.work.event_steps;
+    if (g.tau < g.h) spans_.take_at(g.k0, g.k1, g.tau, g.t1);
+    else spans_.take(g.k0, g.k1, g.t1);
+  }
+  g.t0 = g.t1, g.h = 0;
+  for (int i : g.watch.hits()) core_.sw.flag(i);
+  // A closed-form event due at the same instant switches with them.
+  if (g.t1 == stop.t && stop.t == stop.event.t && !stop.event.recheck) core_.sw.flag(stop.event.block);
+  switch_now();
+  core_.sample_if_due([&] { write_for_sample(); });
+}
+
 void ExactEvolve::step() {
   State& s = core_.s;
   if (!valid()) project();
+  in_step_ = true;
   const EventCore::Stop stop = core_.next_stop();
   if (stop.event.t <= s.t) {
     if (core_.take_event(stop.event)) switch_now();
     return;
   }
-  const bool clipped = s.t + spans_.H() >= stop.t;
-  const double h = clipped ? stop.t - s.t : spans_.H();
-  {
-    WorkTimer timer(s.work, s.work.stepping_s);
-    ++s.work.stepped_attempts;
-    for (const auto& sp : core_.active.stepped()) s.work.block_steps += sp.hi - sp.lo;
-    spans_.advance(h);
-  }
-  double tau;
-  {
-    WorkTimer timer(s.work, s.work.event_location_s);
-    tau = screen_.locate(core_.c, s, spans_, core_.active, h);
-  }
-  const bool at_end = !(tau < h);
-  const double t_new = !at_end ? s.t + tau : clipped ? stop.t : s.t + h;
-  const bool reached = stop.reached(clipped);
-  // At a sample right after a switch the runs are those of the last projection, still at s.t:
-  // the switch wrote those it read, and the others are written here.
-  auto write_for_sample = [&] {
-    if (valid()) write(core_.opt.friction_only);
-    else if (spans_.now() == s.t) spans_.write_untouched(core_.epochs.switched(), projected_at_, s.u.data(), s.v.data());
-  };
-  ++s.steps;
-  if (tau <= h) {
-    {
-      WorkTimer timer(s.work, s.work.stepping_s);
-      ++s.work.event_steps;
-      if (at_end) spans_.take(t_new);
-      else spans_.take_at(tau, t_new);
-    }
-    s.t = t_new;
-    for (int i : screen_.hits()) core_.sw.flag(i);
-    // A closed-form event due at the same instant switches with them.
-    if (at_end && reached && !stop.event.recheck) core_.sw.flag(stop.event.block);
-    switch_now();
-    core_.sample_if_due(write_for_sample);
+  Group* g = &groups_.front();  // the group whose screen has looked least far ahead
+  for (Group& x : groups_)
+    if (x.t1 < g->t1) g = &x;
+  if (g->t1 == s.t && !g->event()) {
+    step_group(*g);
     return;
   }
-  spans_.take(t_new);
-  screen_.accept();
-  s.t = t_new;
-  if (reached) {
-    if (core_.take_event(stop.event)) switch_now();
-  } else {
-    retire();
-    core_.promote([&] {
-      if (valid()) write(false);
-    });
+  if (g->t1 < stop.t || (g->event() && g->t1 == stop.t)) {
+    // Nothing anywhere before g->t1: the chain's time moves there.
+    s.t = g->t1;
+    if (g->event()) take_event(*g, stop);
+    else moved_on();
+    return;
   }
-  core_.sample_if_due(write_for_sample);
+  s.t = stop.t;
+  if (stop.t == stop.event.t) {
+    if (core_.take_event(stop.event)) switch_now();
+    core_.sample_if_due([&] { write_for_sample(); });
+  } else {
+    moved_on();
+  }
 }
 
 }  // namespace sb::event_detail

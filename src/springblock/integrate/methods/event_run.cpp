@@ -13,7 +13,7 @@ bool EventRun::exact_now() {
   if (mode_at_ == core_.epochs.now()) return exact_mode_;
   bool fits = true;
   for (const BlockRange& r : core_.active.stepped()) fits = fits && r.size() <= core_.opt.exact_max_run;
-  if (!fits && exact_mode_ && exact_->now() == core_.s.t) exact_->leave();
+  if (!fits && exact_mode_ && exact_->in_step()) exact_->leave();
   exact_mode_ = fits;
   mode_at_ = core_.epochs.now();
   return fits;
@@ -32,17 +32,21 @@ void EventRun::run() {
   while (s.t < core_.t_end && !core_.obs.wants_stop()) {
     const bool lull = quiet_ && core_.sw.n_sliding() == 0;
     if (lull) close_slip_event();
-    if (lull && quiet_->pays()) {
+    const bool quiet = lull && quiet_->pays();
+    if (!quiet && !core_.active.stepped().empty() && exact_now()) {
+      exact_->step();
+      continue;
+    }
+    if (exact_) exact_->pause();
+    if (quiet) {
       if (!quiet_->phase()) return;  // the observer stopped the run inside it; its state is exact
     } else if (core_.active.stepped().empty()) {
       core_.jump();
-    } else if (exact_now()) {
-      exact_->step();
     } else {
       stepped_.step<Coupled, Damped>();
     }
   }
-  if (exact_ && exact_->valid()) exact_->write(false);
+  if (exact_ && exact_->valid() && exact_->in_step()) exact_->write(false);
   core_.finish();
 }
 
