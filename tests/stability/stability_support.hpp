@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,11 +57,23 @@ inline sb::Scene base_scene(sb::Method method, int N = 50) {
 
 // Checks, at every sample: finite state; stuck blocks have v == 0 exactly and a static
 // friction within mu_s,i F_n up to roundoff; groove blocks never carry a sliding direction.
+// And at every switch: the shortest time between two instants at which one block switched
+// (a block that stutters, stopped and restarted by round-off, switches again a few ulp later).
 class InvariantObserver final : public sb::Observer {
  public:
   long samples = 0, nonfinite = 0, stuck_moving = 0, groove_sliding = 0, over_threshold = 0;
   double max_excess = 0;  // max (|f| - mu_s F_n) / (mu_s F_n) over stuck blocks
   double max_abs_u = 0, max_abs_v = 0;
+  double min_switch_interval = std::numeric_limits<double>::infinity();
+
+  void switched(const sb::Chain& c, const sb::State& s, sb::SwitchedBlocks blocks) override {
+    if (last_switch_.empty()) last_switch_.assign(static_cast<std::size_t>(c.N), -1.0);
+    for (int i : blocks) {
+      double& last = last_switch_[static_cast<std::size_t>(i)];
+      if (last >= 0 && s.t > last) min_switch_interval = std::min(min_switch_interval, s.t - last);
+      last = s.t;
+    }
+  }
 
   void sample(const sb::Chain& c, const sb::State& s) override {
     ++samples;
@@ -82,6 +95,9 @@ class InvariantObserver final : public sb::Observer {
     }
   }
   static constexpr double kRoundoff = 1e-12;
+
+ private:
+  std::vector<double> last_switch_;  // per block, the last instant it switched (-1: none)
 };
 
 // Shows every sample to several observers.
@@ -90,6 +106,9 @@ class FanOut final : public sb::Observer {
   explicit FanOut(std::vector<sb::Observer*> obs) : obs_(std::move(obs)) {}
   void sample(const sb::Chain& c, const sb::State& s) override {
     for (auto* o : obs_) o->sample(c, s);
+  }
+  void switched(const sb::Chain& c, const sb::State& s, sb::SwitchedBlocks blocks) override {
+    for (auto* o : obs_) o->switched(c, s, blocks);
   }
 
  private:

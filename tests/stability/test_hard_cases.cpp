@@ -62,10 +62,10 @@ CaseResult check(const std::string& name, sb::Integrator& integ, const sb::Chain
   sbtest::expect_invariants(r, c);
   const double err = r.energy.relative_error();
   std::printf("[case] %-28s %-5s energy rel.err %.2e (tol %.0e)  work %.3e  friction %.3e  "
-              "damping %.3e  switches/pawl %.1f  steps %lld  max|v| %.3g\n",
+              "damping %.3e  switches/pawl %.1f  steps %lld  max|v| %.3g  shortest re-switch %.2e periods\n",
               name.c_str(), integ.name().c_str(), err, tol, r.energy.work_in, r.energy.friction,
               r.energy.damping, double(r.state.switches) / std::max(1, c.n_contact),
-              (long long)r.state.steps, r.inv.max_abs_v);
+              (long long)r.state.steps, r.inv.max_abs_v, r.inv.min_switch_interval * c.omega_max() / (2 * M_PI));
   EXPECT_LE(err, tol) << "energy balance: imbalance " << r.energy.imbalance() << " of scale "
                       << r.energy.scale();
   // Switching is bounded: at most a stop and a restart per pawl per step (chattering), and
@@ -74,12 +74,20 @@ CaseResult check(const std::string& name, sb::Integrator& integ, const sb::Chain
   return r;
 }
 
-// A scene's chain from rest for `t0s` loading times.
-void run_scene(const std::string& name, const sb::Scene& s, double t0s, double tol,
-               sb::Integrator& integ, double max_switches_per_pawl = 2000) {
+// A scene's chain from rest for `t0s` loading times. No block stutters: two instants at which
+// one block switches are never closer than 1e-6 of the fastest mode's period. A block stopped
+// and restarted by round-off switches again a few ulp of t later, some 1e-12 of a period; every
+// case here, with either integrator, keeps at least 4e-3 of a period. A bound on the number of
+// switches cannot tell stutter from the dynamics: on the stiffest chain (K_int/K_s = 1e4, run
+// from the command line, 3 repetitions) the count is chaotic, 130 to 3,200 a pawl between
+// repetitions and steppers (exact; Dormand-Prince at tol 1e-8 and 1e-10), a bound of 2,000
+// failed by the Dormand-Prince reference itself.
+void run_scene(const std::string& name, const sb::Scene& s, double t0s, double tol, sb::Integrator& integ) {
   const sb::Chain c = sb::build_chain(s, 0);
   const auto r = check(name, integ, c, sb::State::at_rest(c), t0s * s.t0_s(), s.run.sample_dt_s, tol);
-  EXPECT_LE(double(r.state.switches) / c.n_contact, max_switches_per_pawl) << name;
+  const double period = 2 * M_PI / c.omega_max();
+  EXPECT_GE(r.inv.min_switch_interval, 1e-6 * period) << name << ": a block switched twice within "
+                                                       << r.inv.min_switch_interval << " s";
 }
 
 TEST_P(HardCases, BaselineAndPatterns) {
@@ -98,7 +106,7 @@ TEST_P(HardCases, MuDEqualsMuS) {
   SB_INTEGRATOR_OR_SKIP(integ, s.run);
   run_scene("mu_d = mu_s (clipped pairs)", s, 3.0, 5e-3, *integ);
   s.friction = {1.0, 0.0, 1.0, 0.0};  // exactly equal: slips are creeps at the threshold
-  run_scene("mu_d = mu_s exactly", s, 3.0, 5e-3, *integ, 1e6);
+  run_scene("mu_d = mu_s exactly", s, 3.0, 5e-3, *integ);
 }
 
 TEST_P(HardCases, MuDToZero) {
@@ -123,7 +131,7 @@ TEST_P(HardCases, MuDAboveMuSKept) {
   ASSERT_GT(above, 5) << "the draw should contain pairs with mu_d > mu_s";
   // A block with mu_d > mu_s restarts and stops every step near its threshold (chattering): the
   // switch count is bounded only by 2 per step, and each stop drops O(h) of kinetic energy.
-  run_scene("mu_d > mu_s kept", s, 3.0, 2e-2, *integ, 1e9);
+  run_scene("mu_d > mu_s kept", s, 3.0, 2e-2, *integ);
 }
 
 TEST_P(HardCases, ZeroDispersion) {
