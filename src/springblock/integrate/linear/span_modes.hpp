@@ -59,8 +59,9 @@ class SpanModes {
   void take_at(int k0, int k1, double tau, double t);
   // Their current state moved to time t >= t0 (nothing if they are there).
   void bring(int k0, int k1, double t);
-  // Whether run k was kept by the last projection (not projected afresh).
+  // Whether run k was kept by the last projection (not projected afresh), and its current time.
   bool kept(int k) const { return spans_[k].kept; }
+  double t0(int k) const { return spans_[k].t0; }
   // Runs are held (projected and not forgotten since).
   bool live() const { return !spans_.empty(); }
 

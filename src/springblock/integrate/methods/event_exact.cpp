@@ -33,25 +33,25 @@ void ExactEvolve::project() {
   projected_at_ = valid_at_ = core_.epochs.now();
   const std::vector<BlockRange>& runs = spans_.spans();
   const int n = static_cast<int>(runs.size());
+  ClockAudit* audit = core_.opt.diag.audit;
   std::size_t o = 0;  // the first old group not before the one being formed
   for (int k0 = 0; k0 < n;) {
     int k1 = k0 + 1;
     while (k1 < n && runs[k1].lo == runs[k1 - 1].hi + 1) ++k1;  // a stuck block between them borders both
     Group g;
-    g.k0 = k0, g.k1 = k1, g.t0 = g.t1 = s.t;
+    g.k0 = k0, g.k1 = k1, g.t1 = s.t;
     g.lo = runs[k0].lo - 1, g.hi = runs[k1 - 1].hi + 1;
     bool same = true;  // its runs kept, and they made one group before
     for (int k = k0; k < k1 && same; ++k) same = spans_.kept(k);
     while (o < old_.size() && old_[o].lo < g.lo) ++o;
     same = same && o < old_.size() && old_[o].lo == g.lo && old_[o].hi == g.hi;
     const bool keep = same && !old_[o].stale;
-    ClockAudit* audit = core_.opt.diag.audit;
     if (audit != nullptr) audit->take(keep, same && !keep);
     if (keep) {
       Group& was = old_[o];
       if (audit != nullptr && !screen_.current(s, spans_, core_.active, was.watch))
         throw std::logic_error("exact stepper: a group kept its clock across a change its screen reads");
-      g.t0 = was.t0, g.t1 = was.t1, g.h = was.h, g.tau = was.tau;
+      g.t1 = was.t1, g.h = was.h, g.tau = was.tau;
       g.watch = std::move(was.watch);
     } else {
       spans_.bring(k0, k1, s.t);
@@ -111,7 +111,6 @@ void ExactEvolve::step_group(Group& g) {
   {
     WorkTimer timer(s.work, s.work.stepping_s);
     if (g.h > 0) spans_.take(g.k0, g.k1, g.t1), SpanScreen::accept(g.watch);  // its clean step, reached
-    g.t0 = g.t1;
     ++s.work.stepped_attempts;
     for (int k = g.k0; k < g.k1; ++k) s.work.block_steps += spans_.spans()[k].size();
     spans_.advance(g.k0, g.k1, H);
@@ -119,11 +118,11 @@ void ExactEvolve::step_group(Group& g) {
   double tau;
   {
     WorkTimer timer(s.work, s.work.event_location_s);
-    tau = screen_.locate(core_.c, s, spans_, core_.active, g.watch, g.t0, H);
+    tau = screen_.locate(core_.c, s, spans_, core_.active, g.watch, spans_.t0(g.k0), H);
   }
   ++s.steps;
   g.h = H, g.tau = tau;
-  g.t1 = g.t0 + (g.event() ? tau : H);
+  g.t1 = spans_.t0(g.k0) + (g.event() ? tau : H);
 }
 
 void ExactEvolve::take_event(Group& g, const EventCore::Stop& stop) {
@@ -134,7 +133,7 @@ void ExactEvolve::take_event(Group& g, const EventCore::Stop& stop) {
     if (g.tau < g.h) spans_.take_at(g.k0, g.k1, g.tau, g.t1);
     else spans_.take(g.k0, g.k1, g.t1);
   }
-  g.t0 = g.t1, g.h = 0;
+  g.h = 0;
   for (int i : g.watch.hits()) core_.sw.flag(i);
   // A closed-form event due at the same instant switches with them.
   if (g.t1 == stop.t && stop.t == stop.event.t && !stop.event.recheck) core_.sw.flag(stop.event.block);

@@ -41,12 +41,12 @@ class ExactEvolve {
   void leave();
 
  private:
-  // Runs k0 .. k1 - 1 of spans_ on one clock: at time t0, their screen clean over (t0, t1] or
-  // holding an event at t1 (the step of length h, 0 before the first; the event at t0 + tau,
-  // +inf if none).
+  // Runs k0 .. k1 - 1 of spans_ on one clock: at their time t0 (SpanModes::t0), their screen
+  // clean over (t0, t1] or holding an event at t1 (the step of length h, 0 before the first; the
+  // event at t0 + tau, +inf if none).
   struct Group {
     int k0, k1;
-    double t0, t1;
+    double t1;
     double h = 0, tau = 0;
     bool event() const { return h > 0 && tau <= h; }
     bool stale = false;  // the last classification renewed a block in [lo, hi) (mark_renewed)
