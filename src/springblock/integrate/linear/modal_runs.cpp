@@ -26,7 +26,8 @@ ModalRuns::ModalRuns(const Chain& c, RunStore& store)
 void ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool grooves) {
   const RunStore::Run& rec =
       store_.project(c, {lo, hi}, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kModal);
-  Run run{lo, hi, s.t, 0, false, grooves};
+  const Ends ends{rec.shape, {store_.A(lo), store_.A(hi - 1)}, {store_.B(lo), store_.B(hi - 1)}};
+  Run run{lo, hi, ends, s.t, 0, false, grooves};
   if (grooves) run.settled_after = s.t + store_.envelope(rec).time_below(settle_.u, settle_.v);
   for (int i = lo; i < hi; ++i) run_of_[i] = static_cast<int>(runs_.size());
   runs_.push_back(run);
@@ -60,16 +61,15 @@ void ModalRuns::row_taylor(int i, double t, int deg, double* c) {
 void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, Rows rows) {
   const double sample_dt = store_.shapes().sample_dt();
   for (Run& r : runs_) {
-    const RunStore::Run& rec = record(r);
     const double* q = cursor_.q.data();
     const double* qd = cursor_.p.data();
     const bool step = at_sample && r.cursor && sample_dt > 0 &&
                       std::fabs((t - r.tc) - sample_dt) <= 1e-9 * sample_dt && r.since + 1 < kSampleResync;
     if (step) {
-      rec.shape->step_sample(cursor_.q.data() + r.lo, cursor_.p.data() + r.lo);
+      r.ends.shape->step_sample(cursor_.q.data() + r.lo, cursor_.p.data() + r.lo);
       ++r.since;
     } else if (at_sample) {
-      store_.coords(rec, t, cursor_.q.data(), cursor_.p.data());
+      store_.coords(record(r), t, cursor_.q.data(), cursor_.p.data());
       r.since = 0;
     } else {
       scratch_at(r, t);  // off-sample evaluations must not move the cursor
@@ -78,12 +78,12 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, Rows
     if (at_sample) r.tc = t, r.cursor = true;
     if (rows == Rows::kEnds) {
       double first, last;
-      rec.shape->end_rows(q + r.lo, first, last);
-      u[r.lo] = store_.path_u(r.lo, t) + first;
-      u[r.hi - 1] = store_.path_u(r.hi - 1, t) + last;
+      r.ends.shape->end_rows(q + r.lo, first, last);
+      u[r.lo] = r.ends.A[0] + r.ends.B[0] * t + first;
+      u[r.hi - 1] = r.ends.A[1] + r.ends.B[1] * t + last;
       continue;
     }
-    store_.write(rec, t, q, qd, u, v, rows == Rows::kGrooveEnds && r.grooves);
+    store_.write(record(r), t, q, qd, u, v, rows == Rows::kGrooveEnds && r.grooves);
   }
 }
 

@@ -97,8 +97,16 @@ class ModalRuns {
                       double t_limit);
 
  private:
+  // What a sample reads of a run's end rows, copied from its record at projection: the samples
+  // visit every modal run, and on a long chain the records and the per-block paths lie far apart
+  // in memory while these sit in the run's own entry.
+  struct Ends {
+    const RunShape* shape = nullptr;
+    double A[2] = {0, 0}, B[2] = {0, 0};  // the first and last rows' affine path
+  };
   struct Run {
     int lo, hi;
+    Ends ends;
     double tc;        // time of the sample cursor
     int since = 0;    // recurrence steps since the cursor was last set from the closed form
     bool cursor = false;
