@@ -1,6 +1,7 @@
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/numerics/affine_crossing.hpp"
 #include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/kernel_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -34,14 +35,17 @@ void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
 double EdgeMarch::grid_step(double omega_max) { return kGrid / omega_max; }
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const double* P) {
-  sum_.modes.push_back({mode.omega + 2.0 * mode.alpha, mode.fastest_rate(), mode, index});
+  sum_.modes.push_back({mode.fastest_rate(), mode, index});
   sum_.w.push_back(w);
+  sum_.omega.push_back(mode.omega);
+  sum_.m2.push_back(mode.omega + 2.0 * mode.alpha);
   sum_.p00.push_back(P[0]), sum_.p01.push_back(P[1]), sum_.p10.push_back(P[2]), sum_.p11.push_back(P[3]);
 }
 
 void EdgeMarch::finish(double H) {
   H_ = H;
-  for (auto* v : {&now_.q, &now_.p, &next_.q, &next_.p, &scratch_.q, &scratch_.p}) v->resize(sum_.modes.size());
+  for (auto* v : {&now_.q, &now_.p, &next_.q, &next_.p, &scratch_.q, &scratch_.p, &sum_.energy.q, &sum_.energy.p})
+    v->resize(sum_.modes.size());
   poly_.ok = true;
   for (const Mode& m : sum_.modes) poly_.ok = poly_.ok && m.rate * H_ <= kTaylorReach;
 }
@@ -92,17 +96,36 @@ double EdgeMarch::weighted(const double* x) const {
 
 double EdgeMarch::force_at(double tau, const double* q) const { return (gap_.a + gap_.b * tau) + weighted(q); }
 
-EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) const {
-  Bounds B{0.0, std::fabs(gap_.b), 0.0};
-  for (std::size_t k = 0; k < sum_.modes.size(); ++k) {
-    const Mode& m = sum_.modes[k];
-    // Energy bounds |qd| <= E, |q| <= E / omega, |q''| = |gamma qd + omega^2 q| <= (gamma + omega) E.
-    const double E = std::fabs(sum_.w[k]) * std::sqrt(qd[k] * qd[k] + m.mode.omega * m.mode.omega * q[k] * q[k]);
-    B.sb += E;
-    B.mb += E / m.mode.omega;
-    B.m2 += m.m2 * E;
+namespace {
+
+// Per mode, the bound on its weighted velocity from its energy, E = |w| sqrt(qd^2 + omega^2 q^2),
+// and E / omega, the bound on its weighted displacement. Element by element, so the square roots
+// and divisions vectorise; the sums over modes are taken apart, in mode order.
+SB_KERNEL_CLONES void mode_energies(int n, const double* __restrict w, const double* __restrict omega,
+                                    const double* __restrict q, const double* __restrict qd, double* __restrict E,
+                                    double* __restrict E_over_omega) {
+  for (int k = 0; k < n; ++k) {
+    const double e = std::fabs(w[k]) * std::sqrt(qd[k] * qd[k] + omega[k] * omega[k] * q[k] * q[k]);
+    E[k] = e;
+    E_over_omega[k] = e / omega[k];
   }
-  return B;
+}
+
+}  // namespace
+
+EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) {
+  // Energy bounds |qd| <= E, |q| <= E / omega, |q''| = |gamma qd + omega^2 q| <= (gamma + omega) E.
+  const int n = static_cast<int>(sum_.modes.size());
+  double* E = sum_.energy.q.data();
+  double* E_over_omega = sum_.energy.p.data();
+  mode_energies(n, sum_.w.data(), sum_.omega.data(), q, qd, E, E_over_omega);
+  double sb = std::fabs(gap_.b), mb = 0.0, m2 = 0.0;
+  for (int k = 0; k < n; ++k) {
+    sb += E[k];
+    mb += E_over_omega[k];
+    m2 += sum_.m2[k] * E[k];
+  }
+  return {mb, sb, m2};
 }
 
 double EdgeMarch::force(const double* q0, const double* p0, double tau) {

@@ -62,7 +62,7 @@ class EdgeMarch {
   // Forget the modes (the storage is kept for reuse).
   void reset() {
     sum_.modes.clear();
-    for (auto* v : {&sum_.w, &sum_.p00, &sum_.p01, &sum_.p10, &sum_.p11}) v->clear();
+    for (auto* v : {&sum_.w, &sum_.p00, &sum_.p01, &sum_.p10, &sum_.p11, &sum_.omega, &sum_.m2}) v->clear();
   }
   // The grid step used by finish() for modes no faster than omega_max.
   static double grid_step(double omega_max);
@@ -90,7 +90,6 @@ class EdgeMarch {
   static constexpr int kTaylor = 14;
   static constexpr double kTaylorReach = 0.52;
   struct Mode {
-    double m2;            // omega + gamma, for the |q''| bound (the weight: w_)
     double rate;          // largest |eigenvalue| of the mode: omega, or alpha + kappa if overdamped
     DampedMode mode;      // its omega is the bounds' and the grid's
     int index;
@@ -104,7 +103,7 @@ class EdgeMarch {
   void grid_step();                                              // next_ = now_ advanced by H
   double force_at(double tau, const double* q) const;            // a + b tau + sum w q
   double weighted(const double* x) const;                        // sum w x (the order of every such sum)
-  Bounds bounds(const double* q, const double* qd) const;        // from the modes' energies
+  Bounds bounds(const double* q, const double* qd);              // from the modes' energies
   double force(const double* q0, const double* p0, double tau);  // F only, direct (scratch state)
   // The gap fs - measure(F) at tau and its slope, from one direct evaluation (dF is the modes'
   // velocities summed: no extra exp or sincos).
@@ -132,13 +131,15 @@ class EdgeMarch {
   void expand(const double* q0, const double* p0, double tau_base);
   void local_eval(double tau, double& F, double& dF);
 
-  // The modes and, apart, the grid step's hot data, one array each (structure of arrays): the
-  // modes' weights in the force (their only copy) and each mode's transition over H,
-  // [q, qd](tau + H) = [[p00, p01], [p10, p11]] [q, qd](tau), so the transition vectorises and a
-  // grid step reads only what it uses.
+  // The modes and, apart, the hot data of a grid step and of the bounds, one array each
+  // (structure of arrays): the modes' weights in the force (their only copy), each mode's
+  // transition over H, [q, qd](tau + H) = [[p00, p01], [p10, p11]] [q, qd](tau), and its omega
+  // and omega + gamma (the |q''| bound's factor), so the transition and the bounds' square roots
+  // and divisions vectorise and each reads only what it uses. energy: the bounds' per-mode terms.
   struct Sum {
     std::vector<Mode> modes;
-    std::vector<double> w, p00, p01, p10, p11;
+    std::vector<double> w, p00, p01, p10, p11, omega, m2;
+    Coords energy;
   };
   // The event function: F's affine part a + b tau, the sense of the threshold, an open origin.
   struct Gap {
