@@ -85,14 +85,18 @@ using Transition = std::array<double, 4>;
 // Modes [0, n) moved on by their transitions, given element by element (p00[k] is mode k's P0):
 // (qn, pn) = P (q, p). Element-wise, so it vectorises; the exact stepper's grid step and
 // EdgeMarch's keep their transitions in these four arrays for it.
+// Mode k of those arrays moved on: the one place the transition is applied.
+SB_INLINE void step_mode(int k, const double* __restrict p00, const double* __restrict p01,
+                         const double* __restrict p10, const double* __restrict p11, const double* __restrict q,
+                         const double* __restrict p, double* __restrict qn, double* __restrict pn) {
+  qn[k] = p00[k] * q[k] + p01[k] * p[k];
+  pn[k] = p10[k] * q[k] + p11[k] * p[k];
+}
 SB_KERNEL_CLONES inline void step_modes(int n, const double* __restrict p00, const double* __restrict p01,
                                         const double* __restrict p10, const double* __restrict p11,
                                         const double* __restrict q, const double* __restrict p,
                                         double* __restrict qn, double* __restrict pn) {
-  for (int k = 0; k < n; ++k) {
-    qn[k] = p00[k] * q[k] + p01[k] * p[k];
-    pn[k] = p10[k] * q[k] + p11[k] * p[k];
-  }
+  for (int k = 0; k < n; ++k) step_mode(k, p00, p01, p10, p11, q, p, qn, pn);
 }
 
 struct DampedMode {

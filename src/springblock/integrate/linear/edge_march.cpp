@@ -74,27 +74,57 @@ void EdgeMarch::direct(const double* q0, const double* p0, double tau, double* q
       });
 }
 
-void EdgeMarch::grid_step() {
-  step_modes(static_cast<int>(sum_.modes.size()), sum_.p00.data(), sum_.p01.data(), sum_.p10.data(), sum_.p11.data(),
-             now_.q.data(), now_.p.data(), next_.q.data(), next_.p.data());
-}
+namespace {
 
 // The modes' weighted sum, sum_k w_k x_k, in four lanes (mode k in lane k % 4, the lanes added
 // pairwise): one sum in mode order is a chain of dependent additions, and the march takes one
 // at every grid step. F and F' are always summed this way (force_at, gap, expand), so the local
-// polynomial at its base is F there to the last bit.
-double EdgeMarch::weighted(const double* x) const {
-  const double* w = sum_.w.data();
-  const int n = static_cast<int>(sum_.modes.size());
+// polynomial at its base is F there to the last bit. x(k) gives mode k's value.
+template <class X>
+SB_INLINE double lane_sum(int n, const double* __restrict w, X x) {
   double d[4] = {};
   int k = 0;
   for (; k + 4 <= n; k += 4)
-    for (int l = 0; l < 4; ++l) d[l] += w[k + l] * x[k + l];
-  for (int l = 0; k < n; ++k, ++l) d[l] += w[k] * x[k];
+    for (int l = 0; l < 4; ++l) d[l] += w[k + l] * x(k + l);
+  for (int l = 0; k < n; ++k, ++l) d[l] += w[k] * x(k);
   return (d[0] + d[1]) + (d[2] + d[3]);
 }
 
-double EdgeMarch::force_at(double tau, const double* q) const { return (gap_.a + gap_.b * tau) + weighted(q); }
+SB_KERNEL_CLONES double weighted_sum(int n, const double* __restrict w, const double* __restrict x) {
+  return lane_sum(n, w, [x](int k) __attribute__((always_inline)) { return x[k]; });
+}
+
+// A grid step of every mode and the weighted sum of the new q in one pass over the modes.
+SB_KERNEL_CLONES double step_and_weigh(int n, const double* __restrict p00, const double* __restrict p01,
+                                       const double* __restrict p10, const double* __restrict p11,
+                                       const double* __restrict q, const double* __restrict p, double* __restrict qn,
+                                       double* __restrict pn, const double* __restrict w) {
+  return lane_sum(n, w, [&](int k) __attribute__((always_inline)) {
+    step_mode(k, p00, p01, p10, p11, q, p, qn, pn);
+    return qn[k];
+  });
+}
+
+}  // namespace
+
+double EdgeMarch::grid_step() {
+  return step_and_weigh(static_cast<int>(sum_.modes.size()), sum_.p00.data(), sum_.p01.data(), sum_.p10.data(),
+                        sum_.p11.data(), now_.q.data(), now_.p.data(), next_.q.data(), next_.p.data(),
+                        sum_.w.data());
+}
+
+double EdgeMarch::advance(const double* q0, const double* p0, double t1, int& since_sync) {
+  if (++since_sync < kResync) return grid_step();
+  direct(q0, p0, t1, next_.q.data(), next_.p.data());
+  since_sync = 0;
+  return weighted(next_.q.data());
+}
+
+double EdgeMarch::weighted(const double* x) const {
+  return weighted_sum(static_cast<int>(sum_.modes.size()), sum_.w.data(), x);
+}
+
+double EdgeMarch::force_at(double tau, const double* q) const { return affine_at(tau) + weighted(q); }
 
 namespace {
 
@@ -210,13 +240,7 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
       continue;
     }
     const double t1 = tau + H_;
-    if (++since_sync >= kResync) {
-      direct(q0, p0, t1, next_.q.data(), next_.p.data());
-      since_sync = 0;
-    } else {
-      grid_step();
-    }
-    const double F1 = force_at(t1, next_.q.data());
+    const double F1 = affine_at(t1) + advance(q0, p0, t1, since_sync);
     // At an open origin the gap is ~0 (on the threshold): bisection's end there is lo itself.
     if (measure(F1) >= fs) {
       expand(q0, p0, tau);

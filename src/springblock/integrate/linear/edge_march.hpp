@@ -100,8 +100,12 @@ class EdgeMarch {
   // The modes at tau into q, qd (one exp and sincos per mode).
   void direct(const double* q0, const double* p0, double tau, double* q, double* qd);
   void direct(const double* q0, const double* p0, double tau) { direct(q0, p0, tau, now_.q.data(), now_.p.data()); }
-  void grid_step();                                              // next_ = now_ advanced by H
+  double grid_step();                                            // next_ = now_ advanced by H; weighted(next_.q)
+  // next_ = the modes at t1, one grid step on from now_: by the grid step, or every kResync-th
+  // step by the closed form, so the recurrence's round-off never accumulates; weighted(next_.q).
+  double advance(const double* q0, const double* p0, double t1, int& since_sync);
   double force_at(double tau, const double* q) const;            // a + b tau + sum w q
+  double affine_at(double tau) const { return gap_.a + gap_.b * tau; }
   double weighted(const double* x) const;                        // sum w x (the order of every such sum)
   Bounds bounds(const double* q, const double* qd);              // from the modes' energies
   double force(const double* q0, const double* p0, double tau);  // F only, direct (scratch state)
