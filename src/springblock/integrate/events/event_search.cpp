@@ -31,8 +31,10 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
       default: return s.u[j];  // a stuck neighbour does not move
     }
   };
+  // Every watched sliding block is stepped and is tested at theta = 1/2 first.
+  dp.dense_v_spans(active.stepped(), 0.5, v_half_.data());
   auto g = [&](int i, double th) {
-    if (s.dir[i] != 0) return s.dir[i] * (th == 1.0 ? v1[i] : dp.dense_v(i, th));
+    if (s.dir[i] != 0) return s.dir[i] * (th == 1.0 ? v1[i] : th == 0.5 ? v_half_[i] : dp.dense_v(i, th));
     // Stuck: v_i = 0 (no damping force) and u_i does not move.
     double F = c.k_s(i) * (c.v_slider * (t + th * h) - s.u[i]);
     if (i > 0) F += c.spring(i - 1) * (nb_u(i - 1, th) - s.u[i]);

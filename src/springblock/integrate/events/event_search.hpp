@@ -19,7 +19,7 @@ namespace sb::event_detail {
 
 class EventSearch {
  public:
-  explicit EventSearch(int N) : theta_(N) { hits_.reserve(N); }
+  explicit EventSearch(int N) : theta_(N), v_half_(N) { hits_.reserve(N); }
 
   // Earliest event fraction theta in [0, 1] of the step [s.t, s.t + h], or a value > 1 if none.
   // hits() then lists the blocks whose events lie within `window` (fraction) of it, in order.
@@ -29,6 +29,7 @@ class EventSearch {
 
  private:
   std::vector<double> theta_;
+  std::vector<double> v_half_;  // the stepped blocks' v at the step's middle (every sliding block's first test)
   std::vector<int> hits_;
 };
 

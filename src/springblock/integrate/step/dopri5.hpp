@@ -64,6 +64,9 @@ class Dopri5 {
   // The continuous extension of the last attempted step at theta in [0, 1].
   double dense_u(int i, double theta) const { return dense(u0_, u1_.data(), 0, i, theta); }
   double dense_v(int i, double theta) const { return dense(v0_, k_[6], 7, i, theta); }
+  // dense_v of every block of the spans at one theta, into out (by block): one pass over the
+  // stage arrays instead of a block at a time.
+  void dense_v_spans(const std::vector<BlockRange>& spans, double theta, double* out) const;
 
   const double* u1() const { return u1_.data(); }
   // The new velocities are stage 7's velocity slope (c7 = 1, a7 = b): stored once, as k_[6].
