@@ -44,8 +44,7 @@ void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const doub
 
 void EdgeMarch::finish(double H) {
   H_ = H;
-  for (auto* v : {&now_.q, &now_.p, &next_.q, &next_.p, &scratch_.q, &scratch_.p, &sum_.energy.q, &sum_.energy.p})
-    v->resize(sum_.modes.size());
+  for (auto* v : {&now_.q, &now_.p, &next_.q, &next_.p, &scratch_.q, &scratch_.p}) v->resize(sum_.modes.size());
   poly_.ok = true;
   for (const Mode& m : sum_.modes) poly_.ok = poly_.ok && m.rate * H_ <= kTaylorReach;
 }
@@ -146,8 +145,8 @@ SB_KERNEL_CLONES void mode_energies(int n, const double* __restrict w, const dou
 EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) {
   // Energy bounds |qd| <= E, |q| <= E / omega, |q''| = |gamma qd + omega^2 q| <= (gamma + omega) E.
   const int n = static_cast<int>(sum_.modes.size());
-  double* E = sum_.energy.q.data();
-  double* E_over_omega = sum_.energy.p.data();
+  double* E = scratch_.q.data();
+  double* E_over_omega = scratch_.p.data();
   mode_energies(n, sum_.w.data(), sum_.omega.data(), q, qd, E, E_over_omega);
   double sb = std::fabs(gap_.b), mb = 0.0, m2 = 0.0;
   for (int k = 0; k < n; ++k) {

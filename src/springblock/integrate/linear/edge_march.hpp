@@ -139,11 +139,10 @@ class EdgeMarch {
   // (structure of arrays): the modes' weights in the force (their only copy), each mode's
   // transition over H, [q, qd](tau + H) = [[p00, p01], [p10, p11]] [q, qd](tau), and its omega
   // and omega + gamma (the |q''| bound's factor), so the transition and the bounds' square roots
-  // and divisions vectorise and each reads only what it uses. energy: the bounds' per-mode terms.
+  // and divisions vectorise and each reads only what it uses.
   struct Sum {
     std::vector<Mode> modes;
     std::vector<double> w, p00, p01, p10, p11, omega, m2;
-    Coords energy;
   };
   // The event function: F's affine part a + b tau, the sense of the threshold, an open origin.
   struct Gap {
@@ -160,8 +159,9 @@ class EdgeMarch {
     double dcoef[kTaylor] = {};
   };
   Sum sum_;
-  Coords now_, next_, scratch_;  // the modes at the march's point, at the next grid point, and
-                                 // the grazing search's direct evaluations
+  // The modes at the march's point and at the next grid point; scratch_, a work array read only
+  // right after it is written: the direct evaluations off the grid, or the bounds' per-mode terms.
+  Coords now_, next_, scratch_;
   Gap gap_;
   Local poly_;
   double H_ = 0;
