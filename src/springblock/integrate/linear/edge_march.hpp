@@ -107,7 +107,8 @@ class EdgeMarch {
   double force_at(double tau, const double* q) const;            // a + b tau + sum w q
   double affine_at(double tau) const { return gap_.a + gap_.b * tau; }
   double weighted(const double* x) const;                        // sum w x (the order of every such sum)
-  Bounds bounds(const double* q, const double* qd);              // from the modes' energies
+  // From the modes' energies at (q, qd), which must not be scratch_: its per-mode terms go there.
+  Bounds bounds(const double* q, const double* qd);
   double force(const double* q0, const double* p0, double tau);  // F only, direct (scratch state)
   // The gap fs - measure(F) at tau and its slope, from one direct evaluation (dF is the modes'
   // velocities summed: no extra exp or sincos).
