@@ -82,16 +82,16 @@ inline void mode_sincos(double x, double& sin_x, double& cos_x) {
 //   (q, q')(tau + dt) = [[P0, P1], [P2, P3]] (q, q')(tau).
 using Transition = std::array<double, 4>;
 
-// Modes [0, n) moved on by their transitions, given element by element (p00[k] is mode k's P0):
-// (qn, pn) = P (q, p). Element-wise, so it vectorises; the exact stepper's grid step and
-// EdgeMarch's keep their transitions in these four arrays for it.
-// Mode k of those arrays moved on: the one place the transition is applied.
+// Mode k moved on by its transition, given element by element (p00[k] is mode k's P0):
+// (qn, pn) = P (q, p). The one place the transition is applied; the exact stepper's grid step
+// and EdgeMarch's keep their transitions in these four arrays for it.
 SB_INLINE void step_mode(int k, const double* __restrict p00, const double* __restrict p01,
                          const double* __restrict p10, const double* __restrict p11, const double* __restrict q,
                          const double* __restrict p, double* __restrict qn, double* __restrict pn) {
   qn[k] = p00[k] * q[k] + p01[k] * p[k];
   pn[k] = p10[k] * q[k] + p11[k] * p[k];
 }
+// Modes [0, n) moved on: element-wise, so it vectorises.
 SB_KERNEL_CLONES inline void step_modes(int n, const double* __restrict p00, const double* __restrict p01,
                                         const double* __restrict p10, const double* __restrict p11,
                                         const double* __restrict q, const double* __restrict p,

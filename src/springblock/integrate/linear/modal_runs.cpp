@@ -1,6 +1,7 @@
 #include "springblock/integrate/linear/modal_runs.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -77,6 +78,8 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, Rows
     }
     if (at_sample) r.tc = t, r.cursor = true;
     if (rows == Rows::kEnds) {
+      // The copy in r.ends holds while the run keeps the record it was projected into.
+      assert(r.ends.shape == record(r).shape && r.ends.A[1] == store_.A(r.hi - 1) && r.ends.B[0] == store_.B(r.lo));
       double first, last;
       r.ends.shape->end_rows(q + r.lo, first, last);
       u[r.lo] = r.ends.A[0] + r.ends.B[0] * t + first;
