@@ -14,7 +14,7 @@
 #include "hand_chain.hpp"
 #include "springblock/integrate/linear/quiet_phase.hpp"
 #include "springblock/integrate/linear/quiet_ringing.hpp"
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 #include "springblock/observe/common_slope_sum.hpp"
 #include "springblock/observe/ringing_sums.hpp"
 #include "springblock/state.hpp"
@@ -121,7 +121,7 @@ void expect_sums_equal_the_rows(bool end_known, bool settled = false) {
   sb::event_detail::QuietRinging q_forces(q);
   sb::RingingSums q_sums(q_forces);
   const double dt = 1e-5;
-  q.set_sample_dt(dt);
+  q_store.shapes().set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);
   for (int i = 0; settled && i < N;) {
     int j = i;
@@ -185,8 +185,8 @@ WindowCounts window_sums_against_one_by_one(const std::vector<std::uint8_t>& paw
   sb::event_detail::QuietPhase q(c, q_store), ref(c, ref_store);
   sb::event_detail::QuietRinging q_forces(q), ref_forces(ref);
   sb::RingingSums q_sums(q_forces), ref_sums(ref_forces);
+  for (auto* st : {&q_store, &ref_store}) st->shapes().set_sample_dt(dt);
   for (auto* p : {&q, &ref}) {
-    p->set_sample_dt(dt);
     p->set_sample_scales(1e-14, 1e-10);
     p->begin(c, s.t, s.u.data(), s.v.data());
   }
@@ -272,7 +272,7 @@ TEST(QuietPhaseSums, EnvelopeHoldsEverySampleOfItsStretch) {
   sb::event_detail::QuietPhase q(c, q_store);
   sb::event_detail::QuietRinging q_forces(q);
   sb::RingingSums q_sums(q_forces);
-  q.set_sample_dt(dt);
+  q_store.shapes().set_sample_dt(dt);
   q.set_sample_scales(1e-14, 1e-10);
   q.begin(c, s.t, s.u.data(), s.v.data());
   const long n = 16;

@@ -4,15 +4,13 @@
 #include <cmath>
 #include <limits>
 
-namespace sb {
+#include "springblock/infinity.hpp"
 
-namespace {
-constexpr double kNever = std::numeric_limits<double>::infinity();
-}
+namespace sb {
 
 AffineTotals affine_share(double a, double b, bool sliding, double t) {
   const double sg = a + b * t >= 0 ? 1.0 : -1.0;
-  return {sg * a, sg * b, a, b, b != 0.0 && (b > 0) != (sg > 0) ? -a / b : kNever, sliding ? 1 : 0};
+  return {sg * a, sg * b, a, b, b != 0.0 && (b > 0) != (sg > 0) ? -a / b : kInf, sliding ? 1 : 0};
 }
 
 AffineTotals operator+(const AffineTotals& x, const AffineTotals& y) {
@@ -28,7 +26,7 @@ AffineForceTree::AffineForceTree(const Chain& c) : leaf_of_(c.N, -1), a_(c.N, 0.
   for (int i = 0; i < c.N; ++i)
     if (leaf_of_[i] >= 0) block_of_[leaf_of_[i]] = i;
   node_.assign(2 * size_, AffineTotals{});
-  for (auto& x : node_) x.t_sign = kNever;
+  for (auto& x : node_) x.t_sign = kInf;
 }
 
 void AffineForceTree::set(int i, double a, double b, bool sliding, double t) {

@@ -18,12 +18,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "springblock/infinity.hpp"
 
 namespace sb {
-namespace {
-constexpr double kNever = std::numeric_limits<double>::infinity();
-}  // namespace
 
 RingingSums::RingingSums(RingingForces& forces)
     : f_(forces),
@@ -75,7 +73,7 @@ void RingingSums::split_edges(double tau_end) {
     bool ringing = false;
     for (int r = 0; r < e.n; ++r) ringing = ringing || split_.live[e.term[r] / 2];
     const double sg = e.fa >= 0 ? 1.0 : -1.0;
-    const bool keeps = sg * e.fb >= 0 || (tau_end < kNever && sg * (e.fa + e.fb * tau_end) >= 0);
+    const bool keeps = sg * e.fb >= 0 || (tau_end < kInf && sg * (e.fa + e.fb * tau_end) >= 0);
     if (ringing || !keeps) {
       split_.listed.push_back(static_cast<int>(k));
       continue;

@@ -1,5 +1,5 @@
 #include "springblock/integrate/events/active_set.hpp"
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -126,7 +126,6 @@ bool ActiveSet::untouched(const State& s, const std::uint8_t* touched, BlockRang
 
 // A grooves-only run is always a whole groove segment; it keeps its A, B while it stays
 // grooves-only, because its stuck boundary blocks have not moved since they were computed.
-// kind_ still holds the previous classification.
 ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uint8_t* touched) {
   if (r.grooves) {
     const std::uint8_t was = kind_[r.span.lo];
@@ -143,9 +142,8 @@ ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uin
   return r.grooves && r.span.hi - r.span.lo <= rules_.modal_max_groove ? kModal : kStepped;
 }
 
-// A run that becomes modal is projected afresh at s.t. (One that stays modal with nothing in or
-// beside it switched keeps its coordinates and its blocks' event times: assign is not called
-// for it.)
+// A run that stays modal with nothing in or beside it switched keeps its coordinates and its
+// blocks' event times: assign is not called for it.
 void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
   r.kind = kind;
   std::fill(kind_.begin() + r.span.lo, kind_.begin() + r.span.hi, kind);
@@ -265,21 +263,15 @@ void ActiveSet::materialise_near(double t, double* u, double* v, const std::vect
   work_.done.clear();
   for (int b : blocks)
     for (int j = b - 1; j <= b + 1; ++j) {
-      if (j < 0 || j >= N()) continue;
-      if (kind_[j] == kSettled) {
-        // The whole run: it may merge into a new run that is stepped or projected from s.u. Its
-        // end rows being current says nothing of its interior (a sample writes only the ends),
-        // so only a run written in this call is skipped.
-        const int lo = store_.run(j).lo;
-        if (std::find(work_.done.begin(), work_.done.end(), lo) != work_.done.end()) continue;
-        store_.write_path(store_.run(j), t, u, v);
-        work_.done.push_back(lo);
-      } else if (kind_[j] == kModal) {
-        const int lo = modal_.run_start(j);
-        if (std::find(work_.done.begin(), work_.done.end(), lo) != work_.done.end()) continue;  // a few runs at most
-        modal_.materialise_run(j, t, u, v);
-        work_.done.push_back(lo);
-      }
+      if (j < 0 || j >= N() || (kind_[j] != kSettled && kind_[j] != kModal)) continue;
+      // The whole run: it may merge into a new run that is stepped or projected from s.u. Its
+      // end rows being current says nothing of its interior (a sample writes only the ends),
+      // so only a run written in this call is skipped (a few runs at most).
+      const RunStore::Run& r = store_.run(j);
+      if (std::find(work_.done.begin(), work_.done.end(), r.lo) != work_.done.end()) continue;
+      if (kind_[j] == kSettled) store_.write_path(r, t, u, v);
+      else modal_.materialise_run(j, t, u, v);
+      work_.done.push_back(r.lo);
     }
 }
 

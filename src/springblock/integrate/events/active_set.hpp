@@ -34,8 +34,6 @@
 // tests). modal_max_run = modal_max_groove = 0 turns modal runs off.
 #include <cstdint>
 #include <limits>
-#include <map>
-#include <tuple>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -80,20 +78,18 @@ class ActiveSet {
 
   enum Kind : std::uint8_t { kStuck = 0, kStepped = 1, kSettled = 2, kModal = 3 };
   Kind kind(int i) const { return static_cast<Kind>(kind_[i]); }
-  // Displacement of a settled groove block at time t.
-  double settled_u(int i, double t) const { return store_.path_u(i, t); }
+  // The affine path A + B t of a settled or modal block: a settled block's exact u and v, a
+  // modal block's u less its modes.
+  double path_u(int i, double t) const { return store_.path_u(i, t); }
+  double path_slope(int i) const { return store_.B(i); }
   // Displacement of a block in a modal run at time t.
   double modal_u(int i, double t) const { return modal_.u(i, t); }
   // Its Taylor polynomial about t (ModalRuns::row_taylor).
   void modal_taylor(int i, double t, int deg, double* c) { modal_.row_taylor(i, t, deg, c); }
-  // Velocity of a settled groove block (its path's slope).
-  double settled_drift(int i) const { return store_.B(i); }
-  // Its affine path and a bound on its deviation from it (ModalRuns::amplitude).
-  double modal_affine_u(int i, double t) const { return modal_.affine_u(i, t); }
+  // A bound on its deviation from its path (ModalRuns::amplitude).
   double modal_amplitude(int i) const { return modal_.amplitude(i); }
-  double modal_affine_slope(int i) const { return modal_.affine_slope(i); }
-  // Block i has a modal run beside it (K_int > 0).
-  bool beside_modal(int i) const;
+  // Block i has a run of kind k beside it (K_int > 0).
+  bool beside(int i, Kind k) const;
 
   // Write the settled and modal runs' exact u, v at time t into u, v (at_sample: t is a sample
   // time; ends_only: grooves-only modal runs write their end rows only, see
@@ -103,7 +99,7 @@ class ActiveSet {
   // neighbours, and the whole modal run any of them is in (it may be projected afresh).
   // Between switches the u, v of settled and modal blocks in the state are not kept current:
   // nothing reads them there (the stepper reads stepped runs and their stuck borders, the event
-  // searches use settled_u / modal_u); the loop materialises everything at samples, before a
+  // searches use path_u / modal_u); the loop materialises everything at samples, before a
   // quiet phase and at the end of the run.
   void materialise_near(double t, double* u, double* v, const std::vector<int>& blocks);
   // Each contact block's friction force as its events were found from it (KnownForces), for a
@@ -156,15 +152,13 @@ class ActiveSet {
   // The kind of run r at s.t, given the previous classification in kind_ and modal_.
   Kind classify(const Run& r, const State& s, const std::uint8_t* touched);
   // Set run r's kind in kind_ (its blocks); a run that becomes modal is registered, projected
-  // afresh (prev_.fresh), and a settled one gets its record on its path. The caller drops a modal run
-  // that stops being one (drop_old).
+  // afresh at s.t (prev_.fresh), and a settled one gets its record on its path. The caller drops a
+  // modal run that stops being one (drop_old).
   void assign(const Chain& c, const State& s, Run& r, Kind kind);
   // Mark run r projected afresh at this classification; forget the marks of the previous one.
   void set_fresh(BlockRange r);
   void clear_fresh();
-  // update()'s steps: the stretches a switch of the listed blocks can have changed (work_.regions);
-  // the runs in one of them found and classified again; the grooves-only runs elsewhere whose
-  // kind changes with time; the blocks whose event time may have changed (work_.cand).
+  // update()'s steps (active_set_update.cpp).
   void find_regions(const Chain& c, const State& s, const std::vector<int>& touched_list);
   void renew_region(const Chain& c, const State& s, const std::uint8_t* touched, BlockRange region);
   void retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched);
@@ -192,18 +186,16 @@ class ActiveSet {
   // before it, moved to it) for increasing lo: O(1) when the runs sought lie close together, as
   // the stepped runs of a smooth chain do, O(log gap) otherwise.
   Run& seek(std::size_t& cursor, int lo);
-  // Closed-form crossing of stuck block i from time t (force affine: no stepped neighbour).
-  void update_crossing(const Chain& c, const State& s, int i);
   // The event time of stuck block i when it needs no modal search (watched: none here;
-  // otherwise closed form). Returns false if it borders a modal run (search it instead).
+  // otherwise closed form). Returns false if it borders a modal run and no stepped one (search it
+  // instead).
   bool refresh_stuck(const Chain& c, const State& s, int i);
   bool any_modal() const { return rules_.modal_max > 0 || rules_.modal_max_groove > 0; }
   // Modal event search of block i up to limit (stop if sliding, threshold crossing if stuck).
   void search_modal(const Chain& c, const State& s, int i, double limit);
   // How far a modal search of block i need go: the earliest real event that can make it stale.
   double local_limit(int i) const;
-  // Refresh the event queue, then the pending modal searches, each limited by the earliest
-  // event so far.
+  // The searches in work_.pending, after the event queue's refresh (active_set_events.cpp).
   void finish_events(const Chain& c, const State& s);
 
   // What the classification follows, fixed for the run.

@@ -6,7 +6,7 @@
 
 #include "springblock/integrate/events/active_set.hpp"
 #include "springblock/integrate/numerics/affine_crossing.hpp"
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 
 namespace sb::event_detail {
 
@@ -43,24 +43,35 @@ void ActiveSet::update_events(const Chain& c, const State& s, const std::uint8_t
   finish_events(c, s);
 }
 
-bool ActiveSet::beside_modal(int i) const {
-  return rules_.K_int > 0 && ((i > 0 && kind_[i - 1] == kModal) || (i + 1 < N() && kind_[i + 1] == kModal));
+bool ActiveSet::beside(int i, Kind k) const {
+  return rules_.K_int > 0 && ((i > 0 && kind_[i - 1] == k) || (i + 1 < N() && kind_[i + 1] == k));
 }
 
 bool ActiveSet::refresh_stuck(const Chain& c, const State& s, int i) {
-  if (rules_.K_int > 0)
-    for (int j : {i - 1, i + 1})
-      if (j >= 0 && j < N() && kind_[j] == kStepped) {
-        events_.set(i, kInf, false);  // watched: the step's dense output finds its crossing
-        forces_.live(i);
-        return true;
-      }
-  if (beside_modal(i)) {
-    events_.set(i, kInf, false);  // searched by finish_events
+  // Beside a stepped run it is watched: the step's dense output finds its crossing. Beside a
+  // modal run (and no stepped one) it is searched by finish_events.
+  const bool watched = beside(i, kStepped);
+  if (watched || beside(i, kModal)) {
+    events_.set(i, kInf, false);
     forces_.live(i);
-    return false;
+    return watched;
   }
-  update_crossing(c, s, i);
+  // Otherwise its force is affine: a settled neighbour follows its path, any other is stuck.
+  double a = c.k_s(i) * (c.v_slider * s.t - s.u[i]), b = c.k_s(i) * c.v_slider;
+  if (rules_.K_int > 0) {
+    for (int j : {i - 1, i + 1}) {
+      if (j < 0 || j >= N()) continue;
+      const double k_ij = c.spring_between(i, j);
+      if (kind_[j] == kSettled) {
+        a += k_ij * (path_u(j, s.t) - s.u[i]);
+        b += k_ij * path_slope(j);
+      } else {
+        a += k_ij * (s.u[j] - s.u[i]);
+      }
+    }
+  }
+  forces_.affine(i, a - b * s.t, b);  // a + b tau with tau = t - s.t
+  events_.set(i, s.t + affine_crossing(a, b, c.f_static[i]), false);
   return true;
 }
 
@@ -73,7 +84,7 @@ void ActiveSet::search_modal(const Chain& c, const State& s, int i, double limit
     for (int side = 0; side < 2; ++side) {
       const int j = side == 0 ? i - 1 : i + 1;
       if (j < 0 || j >= N()) continue;
-      if (kind_[j] == kSettled) base[side] = settled_u(j, s.t), nb_B[side] = store_.B(j);
+      if (kind_[j] == kSettled) base[side] = path_u(j, s.t), nb_B[side] = path_slope(j);
       else base[side] = s.u[j];
     }
     f = modal_.crossing_time(c, s, i, base, nb_B, limit);
@@ -128,29 +139,6 @@ void ActiveSet::recheck(const Chain& c, const State& s) {
   prev_.fresh[i] = 0;
   work_.pending.assign(1, i);
   finish_events(c, s);
-}
-
-void ActiveSet::update_crossing(const Chain& c, const State& s, int i) {
-  double a = c.k_s(i) * (c.v_slider * s.t - s.u[i]), b = c.k_s(i) * c.v_slider;
-  if (rules_.K_int > 0) {
-    for (int j : {i - 1, i + 1}) {
-      if (j < 0 || j >= N()) continue;
-      if (kind_[j] == kStepped) {  // watched instead: its force is not affine
-        events_.set(i, kInf, false);
-        forces_.live(i);
-        return;
-      }
-      const double k_ij = c.spring_between(i, j);
-      if (kind_[j] == kSettled) {
-        a += k_ij * (settled_u(j, s.t) - s.u[i]);
-        b += k_ij * store_.B(j);
-      } else {
-        a += k_ij * (s.u[j] - s.u[i]);
-      }
-    }
-  }
-  forces_.affine(i, a - b * s.t, b);  // a + b tau with tau = t - s.t
-  events_.set(i, s.t + affine_crossing(a, b, c.f_static[i]), false);
 }
 
 bool ActiveSet::retire_settled(const Chain& c, const State& s) {

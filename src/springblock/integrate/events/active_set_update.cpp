@@ -88,7 +88,6 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
 // every run would visit them.
 void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched) {
   work_.retimed.clear();
-  work_.visit.clear();
   work_.visit.assign(list_.live_grooves.begin(), list_.live_grooves.end());
   work_.due.clear();
   while (!list_.settling.empty() && list_.settling.top().first <= s.t) {

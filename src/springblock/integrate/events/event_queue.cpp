@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 
 namespace sb::event_detail {
 
@@ -23,10 +23,10 @@ EventQueue::Node EventQueue::leaf(int i) const {
   return {key(t_[i], (std::uint32_t{rc} << 31) | block), key(rc ? kInf : t_[i], block)};
 }
 
-EventQueue::EventQueue(int N) : N_(N), t_(N, kInf), recheck_(N, 0), dirty_(N, 0) {
-  while (P_ < N_) P_ *= 2;
+EventQueue::EventQueue(int N) : t_(N, kInf), recheck_(N, 0), dirty_(N) {
+  while (P_ < N) P_ *= 2;
   tree_.assign(2 * P_, Node{kEmpty, kEmpty});
-  for (int i = 0; i < N_; ++i) tree_[P_ + i] = leaf(i);
+  for (int i = 0; i < N; ++i) tree_[P_ + i] = leaf(i);
   for (int n = P_ - 1; n >= 1; --n)
     tree_[n] = {std::min(tree_[2 * n].all, tree_[2 * n + 1].all), std::min(tree_[2 * n].real, tree_[2 * n + 1].real)};
 }
@@ -35,15 +35,14 @@ void EventQueue::set(int i, double t, bool recheck) {
   if (t_[i] == t && (recheck_[i] != 0) == recheck) return;
   t_[i] = t;
   recheck_[i] = recheck;
-  if (!dirty_[i]) dirty_[i] = 1, dirty_list_.push_back(i);
+  dirty_.add(i);
 }
 
 void EventQueue::refresh() {
   // A block's leaf takes its new key here, and its climb stops at the first node whose keys do
   // not change: every node above it already holds the earliest of its subtree. Each climb leaves
   // the whole tree consistent, so the dirty blocks may climb in any order.
-  for (int i : dirty_list_) {
-    dirty_[i] = 0;
+  for (int i : dirty_.list()) {
     tree_[P_ + i] = leaf(i);
     for (int n = (P_ + i) >> 1; n >= 1; n >>= 1) {
       const Node& l = tree_[2 * n];
@@ -53,7 +52,7 @@ void EventQueue::refresh() {
       tree_[n] = w;
     }
   }
-  dirty_list_.clear();
+  dirty_.clear();
   const Node& top = tree_[1];
   const int b = top.all == kEmpty ? -1 : static_cast<int>(static_cast<std::uint32_t>(top.all) & 0x7fffffffu);
   const int e = top.real == kEmpty ? -1 : static_cast<int>(static_cast<std::uint32_t>(top.real));

@@ -16,6 +16,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "springblock/integrate/block_set.hpp"
+
 namespace sb::event_detail {
 
 class EventQueue {
@@ -52,13 +54,11 @@ class EventQueue {
   static Key key(double t, std::uint32_t tie);
   Node leaf(int i) const;
 
-  int N_;
   int P_ = 1;                          // leaves of the trees (a power of two >= N)
   std::vector<double> t_;              // per block: its entry (infinity if none)
   std::vector<std::uint8_t> recheck_;  // per block: the entry is a cut-off modal search
   std::vector<Node> tree_;             // node n: children 2n, 2n + 1; leaves P_ + block
-  std::vector<std::uint8_t> dirty_;    // per block: entry changed since refresh()
-  std::vector<int> dirty_list_;
+  BlockSet dirty_;                     // the blocks whose entry changed since refresh()
   Next next_{0, -1, false};
   double next_real_ = 0;
 };

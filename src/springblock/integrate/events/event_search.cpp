@@ -6,15 +6,6 @@
 #include "springblock/integrate/numerics/round_off.hpp"
 
 namespace sb::event_detail {
-namespace {
-
-// Done when the bracket spans round-off in t (round_off.hpp), in units of the step (theta).
-struct RoundOff {
-  double t, h;
-  double operator()(double hi) const { return time_round_off(t + hi * h) / h; }
-};
-
-}  // namespace
 
 double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, double h, const ActiveSet& active,
                            double window) {
@@ -26,7 +17,7 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
   auto nb_u = [&](int j, double th) {
     switch (active.kind(j)) {
       case ActiveSet::kStepped: return th == 1.0 ? u1[j] : dp.dense_u(j, th);
-      case ActiveSet::kSettled: return active.settled_u(j, t + th * h);
+      case ActiveSet::kSettled: return active.path_u(j, t + th * h);
       case ActiveSet::kModal: return active.modal_u(j, t + th * h);
       default: return s.u[j];  // a stuck neighbour does not move
     }
@@ -51,18 +42,21 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
       if (j < 0 || j >= N) continue;
       const bool modal = active.kind(j) == ActiveSet::kModal;
       const double k_ij = c.spring_between(i, j);
-      const double d = k_ij * ((modal ? active.modal_affine_u(j, t + th * h) : nb_u(j, th)) - s.u[i]);
+      const double d = k_ij * ((modal ? active.path_u(j, t + th * h) : nb_u(j, th)) - s.u[i]);
       F += d, scale += std::fabs(d);
       if (modal) spread += k_ij * active.modal_amplitude(j);
     }
     return std::fabs(F) + spread + 1e-12 * (scale + spread) < c.f_static[i] * (1.0 - 1e-9);
   };
+  // Done when the bracket spans round-off in t (round_off.hpp), in units of the step (theta).
+  auto width = [t, h](double hi) { return time_round_off(t + hi * h) / h; };
   const std::vector<int>& watched = active.watched();
   double best = 2.0;
   for (std::size_t k = 0; k < watched.size(); ++k) {
     const int i = watched[k];
     theta_[k] = 2.0;
-    if (s.dir[i] == 0 && active.beside_modal(i) && surely_no_event(i, 0.5) && surely_no_event(i, 1.0)) continue;
+    if (s.dir[i] == 0 && active.beside(i, ActiveSet::kModal) && surely_no_event(i, 0.5) && surely_no_event(i, 1.0))
+      continue;
     const double g_half = g(i, 0.5);
     double lo, g_lo, hi, g_hi;
     if (g_half <= 0) {
@@ -71,7 +65,7 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
       lo = 0.5, g_lo = g_half, hi = 1.0, g_hi = g(i, 1.0);
       if (!(g_hi <= 0)) continue;
     }
-    hi = first_root([&](double th) { return g(i, th); }, lo, g_lo, hi, g_hi, RoundOff{t, h});
+    hi = first_root([&](double th) { return g(i, th); }, lo, g_lo, hi, g_hi, width);
     theta_[k] = hi;
     if (hi < best) best = hi;
   }

@@ -5,7 +5,7 @@
 
 #include "springblock/integrate/numerics/estrin.hpp"
 #include "springblock/integrate/numerics/first_root.hpp"
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 #include "springblock/integrate/numerics/round_off.hpp"
 
 namespace sb::event_detail {
@@ -128,12 +128,9 @@ double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans,
         if (slope) dF += k * (fresh_at_start(nb) ? s.v[nb] : spans.v(nb, end));
         break;
       case kSettled:
-        F += k * (active.settled_u(nb, t) - uj);
-        dF += k * active.settled_drift(nb);
-        break;
       case kModal:
-        F += k * (active.modal_affine_u(nb, t) - uj);
-        dF += k * active.modal_affine_slope(nb);
+        F += k * (active.path_u(nb, t) - uj);
+        dF += k * active.path_slope(nb);
         break;
       case kFixed: F += k * (s.u[nb] - uj); break;
     }
@@ -159,7 +156,6 @@ double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans
       f.end.d = cheap(c, s, spans, active, f, t0 + h, true, true), f.end.known = true;
       if (hermite_positive(f.start.g, f.start.d, f.end.g, f.end.d, h, f.M4)) continue;
     }
-    ++polynomial_searches;
     // A root later than best + window h can neither be the event nor join it (the final best is
     // no later than this one): exact_root does not refine it.
     root_[k] = exact_root(c, s, spans, active, f, t0, h, best + window * h);
@@ -200,8 +196,8 @@ double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& s
       case kNone: continue;  // skipped above
       case kFixed: F[0] += kj * (s.u[nb] - uj); continue;
       case kSettled:
-        F[0] += kj * (active.settled_u(nb, t0) - uj);
-        F[1] += kj * active.settled_drift(nb);
+        F[0] += kj * (active.path_u(nb, t0) - uj);
+        F[1] += kj * active.path_slope(nb);
         continue;
       case kSpan: spans.row_taylor(nb, row); break;
       case kModal: active.modal_taylor(nb, t0, D, row); break;

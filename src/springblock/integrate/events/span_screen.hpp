@@ -78,9 +78,6 @@ class SpanScreen {
   // a stuck block's neighbours' kinds and records (a check for the tests, ClockAudit).
   bool current(const State& s, const SpanModes& spans, const ActiveSet& active, const Watch& w) const;
 
-  // Diagnostics: steps whose cheap test failed for some function, and polynomial searches.
-  long polynomial_searches = 0;
-
  private:
   // g's cheap form at the step's start (end = false) or end, time t, and its slope (slope = true).
   double cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active, const Fn& f,

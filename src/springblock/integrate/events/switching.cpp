@@ -1,5 +1,6 @@
 #include "springblock/integrate/events/switching.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -8,16 +9,15 @@ namespace sb::event_detail {
 
 void Switching::sync(const Chain& c, const State& s) {
   n_sliding_ = 0;
-  for (int i = 0; i < c.N; ++i) {
-    mobile_[i] = (!c.contact[i] || s.dir[i] != 0) ? 1.0 : 0.0;
-    f_kin_[i] = s.dir[i] * c.f_kinetic[i];
-    dir_seen_[i] = s.dir[i];
-    n_sliding_ += s.dir[i] != 0;
-  }
+  std::fill(dir_seen_.begin(), dir_seen_.end(), 0);
+  for (int i = 0; i < c.N; ++i) update(c, s, i);
 }
 
 int apply_rules(const Chain& c, State& s, int i, bool event_here) {
   int made = 0;
+  // A stuck block whose crossing was located here: the crossing is the switch, even if round-off
+  // left |F| a hair below f_static.
+  const bool crossing = event_here && s.dir[i] == 0;
   if (s.dir[i] != 0) {
     const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
     const double dv = s.dir[i] * s.v[i];
@@ -31,17 +31,11 @@ int apply_rules(const Chain& c, State& s, int i, bool event_here) {
       s.dir[i] = 0;
       ++made;
     }
-  } else if (event_here) {
-    // The located crossing is the switch, even if round-off left |F| a hair below f_static.
-    const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
-    s.dir[i] = F >= 0 ? 1 : -1;
-    s.mark_slip(i);
-    return 1;
   }
   if (s.dir[i] == 0) {
     const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
-    if (std::fabs(F) > c.f_static[i]) {
-      s.dir[i] = F > 0 ? 1 : -1;
+    if (crossing || std::fabs(F) > c.f_static[i]) {
+      s.dir[i] = (crossing ? F >= 0 : F > 0) ? 1 : -1;
       s.mark_slip(i);
       ++made;
     }

@@ -10,10 +10,4 @@ struct Coords {
   explicit Coords(int N = 0) : q(N), p(N) {}
 };
 
-// The same at a time t.
-struct Moment {
-  double t = 0;
-  Coords x;
-};
-
 }  // namespace sb::event_detail

@@ -102,11 +102,10 @@ SB_KERNEL_CLONES inline void step_modes(int n, const double* __restrict p00, con
 struct DampedMode {
   double alpha = 0;   // gamma / 2 [1/s]
   double omega2 = 0;  // omega^2 [1/s^2]
-  // Derived once here rather than at every evaluation (the sqrt sat on each evaluation's
+  // Derived once here rather than at every evaluation (the sqrt would sit on each evaluation's
   // critical path): s = omega^2 - alpha^2 and, for an underdamped mode, its frequency sqrt(s).
-  // A mode is made by the
-  // constructor below and never changed after (nothing assigns alpha or omega2 later, which
-  // would leave these stale).
+  // A mode is made by the constructor below and never changed after (nothing assigns alpha or
+  // omega2 later, which would leave these stale).
   double s = 0;       // omega^2 - alpha^2 [1/s^2]: > 0 underdamped, < 0 overdamped
   double w = 0;       // sqrt(|s|) [1/s]
   double omega = 0;   // sqrt(omega^2) [1/s] (the searches' grid and bounds)

@@ -1,6 +1,6 @@
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/numerics/affine_crossing.hpp"
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 #include "springblock/kernel_clones.hpp"
 
 #include <algorithm>
@@ -35,7 +35,7 @@ void EdgeMarch::add_mode(double w, const DampedMode& mode, int index) {
 double EdgeMarch::grid_step(double omega_max) { return kGrid / omega_max; }
 
 void EdgeMarch::add_mode(double w, const DampedMode& mode, int index, const double* P) {
-  sum_.modes.push_back({mode.fastest_rate(), mode, index});
+  sum_.modes.push_back({mode, index});
   sum_.w.push_back(w);
   sum_.omega.push_back(mode.omega);
   sum_.m2.push_back(mode.omega + 2.0 * mode.alpha);
@@ -46,7 +46,7 @@ void EdgeMarch::finish(double H) {
   H_ = H;
   for (auto* v : {&now_.q, &now_.p, &next_.q, &next_.p, &scratch_.q, &scratch_.p}) v->resize(sum_.modes.size());
   poly_.ok = true;
-  for (const Mode& m : sum_.modes) poly_.ok = poly_.ok && m.rate * H_ <= kTaylorReach;
+  for (const Mode& m : sum_.modes) poly_.ok = poly_.ok && m.mode.fastest_rate() * H_ <= kTaylorReach;
 }
 
 double EdgeMarch::affine_reach(double a, double b, double fs) const {

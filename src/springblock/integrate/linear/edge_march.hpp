@@ -84,14 +84,13 @@ class EdgeMarch {
 
  private:
   // Order of the local polynomial and the largest r H it is used at (see the header): the grid
-  // turns the fastest mode by kGrid = 0.5 rad, and 0.52^15 / 15! = 4e-17 is below round-off. It
-  // was order 20 up to r H = 1 (2e-20): six more terms in every evaluation for nothing a double
+  // turns the fastest mode by kGrid = 0.5 rad, and 0.52^15 / 15! = 4e-17 is below round-off.
+  // Order 20 up to r H = 1 (2e-20) would add six terms to every evaluation for nothing a double
   // holds (paper/choices.md).
   static constexpr int kTaylor = 14;
   static constexpr double kTaylorReach = 0.52;
   struct Mode {
-    double rate;          // largest |eigenvalue| of the mode: omega, or alpha + kappa if overdamped
-    DampedMode mode;      // its omega is the bounds' and the grid's
+    DampedMode mode;  // its omega is the bounds' and the grid's
     int index;
   };
   struct Bounds {
@@ -129,9 +128,9 @@ class EdgeMarch {
                 double ghi, double x, double gx, double dgx);
   bool graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi, double Fhi,
              double m2, int depth, double& where);
-  // The Taylor polynomial of F about tau_base (local_ = true), if the modes allow it
-  // (taylor_ok_), from one direct evaluation there: the march's own modes carry the grid
-  // recurrence's round-off, up to ~1e-13 of them, far above what a root to round-off needs.
+  // The Taylor polynomial of F about tau_base (poly_.on), if the modes allow it (poly_.ok),
+  // from one direct evaluation there: the march's own modes carry the grid recurrence's
+  // round-off, up to ~1e-13 of them, far above what a root to round-off needs.
   // F and dF at tau in [tau_base, tau_base + H] from it.
   void expand(const double* q0, const double* p0, double tau_base);
   void local_eval(double tau, double& F, double& dF);
@@ -152,7 +151,8 @@ class EdgeMarch {
     bool open = false;
   };
   // The Taylor polynomial of F about base (on: gap() and force() read it), when every mode's
-  // rate r has r H <= 1 (ok, set by finish): F = sum coef_j (tau - base)^j, F' = sum dcoef_j ...
+  // fastest rate r has r H <= kTaylorReach (ok, set by finish): F = sum coef_j (tau - base)^j,
+  // F' = sum dcoef_j ...
   struct Local {
     bool ok = false, on = false;
     double base = 0;

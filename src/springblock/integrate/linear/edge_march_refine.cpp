@@ -6,7 +6,7 @@
 #include "springblock/integrate/numerics/estrin.hpp"
 #include "springblock/integrate/numerics/first_root.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 #include "springblock/integrate/numerics/round_off.hpp"
 
 namespace sb::event_detail {
@@ -18,8 +18,7 @@ void EdgeMarch::expand(const double* q0, const double* p0, double tau_base) {
   direct(q0, p0, tau_base, scratch_.q.data(), scratch_.p.data());
   const double* q = scratch_.q.data();
   const double* qd = scratch_.p.data();
-  // coef_j = F^(j)(base) / j!: F and F' at the base summed as force_at and gap sum them, so
-  // the polynomial there is their value to the last bit.
+  // coef_j = F^(j)(base) / j!, with F and F' summed as force_at and gap sum them (lane_sum).
   for (int j = 0; j <= kTaylor; ++j) poly_.coef[j] = 0.0;
   for (std::size_t k = 0; k < sum_.modes.size(); ++k)
     add_taylor(sum_.w[k], q[k], qd[k], 2.0 * sum_.modes[k].mode.alpha, sum_.modes[k].mode.omega2, kTaylor, poly_.coef);
@@ -48,10 +47,7 @@ void EdgeMarch::gap(const double* q0, const double* p0, double fs, double tau, d
   dg = (gap_.sense == Sense::Abs && F < 0) ? dF : -dF;
 }
 
-// Shrink a bracket with gap g = fs - measure(F) > 0 at lo and <= 0 at hi to round-off in t: the
-// safeguarded Newton iteration of first_root_newton, whose slopes gap() gives for free. Its
-// evaluations are the local polynomial's when it holds, and then one direct evaluation confirms
-// the result (see the header).
+// The bracket's gap g = fs - measure(F) is > 0 at lo and <= 0 at hi.
 double EdgeMarch::refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                          double ghi) {
   const double x = shrink(q0, p0, fs, t0, lo, glo, hi, ghi, kInf, 0, 0);

@@ -18,6 +18,11 @@
 
 namespace sb::event_detail {
 
+// The scales in u and v below which a transient counts as gone (time_below's eps_u, eps_v).
+struct Scales {
+  double u = 0, v = 0;
+};
+
 struct TransientEnvelope {
   double u = 0, v = 0;  // bounds on every row's |u - path| and |v - drift| at tau = 0
   double alpha = 0;     // decay rate of both

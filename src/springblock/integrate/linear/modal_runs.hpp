@@ -2,11 +2,9 @@
 // Exact propagation of short mobile runs while something slides (the active set's kModal runs).
 //
 // Between two switches a run of mobile blocks (sliding and groove blocks between stuck blocks
-// or chain ends) is a linear system with constant forcing:
-//   m u'' + m gamma u' + K u = K_s v t 1 + K_int (u_left e_1 + u_right e_n) - f_kin,
-// f_kin the signed kinetic friction of its sliding blocks. Around the affine particular solution
-// u_p = A + B t its modes (eigenvectors of K) are damped oscillators solved in closed form
-// (damped_mode.hpp), so the run needs no time step at all. Its events are found by EdgeMarch:
+// or chain ends) is a linear system with constant forcing, f_kin in run_shape.hpp's equation the
+// signed kinetic friction of its sliding blocks: an affine path plus damped modes in closed form,
+// so the run needs no time step at all. Its events are found by EdgeMarch:
 //   * a sliding block stops when dir v falls below -eps_v (eps_v = 1e-12 v_s, the round-off
 //     margin the per-block solver uses too: a creeping block whose velocity only touches zero
 //     is not stopped and restarted at every touch);
@@ -25,6 +23,7 @@
 #include <vector>
 
 #include "springblock/integrate/linear/edge_march.hpp"
+#include "springblock/integrate/linear/envelope.hpp"
 #include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
 #include "springblock/state.hpp"
@@ -61,11 +60,9 @@ class ModalRuns {
   int run_start(int i) const { return runs_[run_of_[i]].lo; }
   // Exact u of a block in a modal run at time t (direct evaluation).
   double u(int i, double t) const { return store_.u(i, t); }
-  // Its affine path A + B t and a bound on the modes' part, |u - (A + B t)| <= amplitude(i) at
-  // every time after the projection (finite for a run's end rows): enough to decide that a stuck
-  // neighbour is far from its threshold without evaluating the modes.
-  double affine_u(int i, double t) const { return store_.path_u(i, t); }
-  double affine_slope(int i) const { return store_.B(i); }
+  // A bound on the modes' part, |u - (A + B t)| <= amplitude(i) at every time after the
+  // projection (finite for a run's end rows): with the affine path (RunStore::path_u) enough to
+  // decide that a stuck neighbour is far from its threshold without evaluating the modes.
   double amplitude(int i) const { return store_.bound(i, 0); }
   // u of block i about time t as a polynomial in tau (RunStore::taylor): the exact stepper's
   // screen of a stuck block beside this run (span_screen.hpp).
@@ -120,9 +117,6 @@ class ModalRuns {
   void scratch_at(Run& r, double t);
   const RunStore::Run& record(const Run& r) const { return store_.run(r.lo); }
 
-  struct Scales {
-    double u = 0, v = 0;
-  };
   double eps_v_;
   Scales settle_;  // set_settle_scales
   RunStore& store_;

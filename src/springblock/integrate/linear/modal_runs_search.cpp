@@ -2,7 +2,7 @@
 // threshold crossing on the sum of a run's modes (EdgeMarch).
 #include <cmath>
 
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 #include "springblock/integrate/linear/modal_runs.hpp"
 
 namespace sb::event_detail {

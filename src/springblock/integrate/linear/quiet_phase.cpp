@@ -1,7 +1,7 @@
 #include "springblock/integrate/linear/quiet_phase.hpp"
 #include "springblock/integrate/linear/envelope.hpp"
 #include "springblock/integrate/numerics/affine_crossing.hpp"
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,37 +9,36 @@
 namespace sb::event_detail {
 
 QuietPhase::QuietPhase(const Chain& c, RunStore& store)
-    : slider_slope_(c.K_s * c.v_slider), store_(store), cursor_{{0, Coords(c.N)}, false}, kept_(cursor_) {
+    : slider_slope_(c.K_s * c.v_slider), store_(store), cursor_{0, Coords(c.N), false}, kept_(cursor_) {
   const int N = c.N;
+  std::vector<int> seg_of(N, -1);  // groove block -> its segment, for the contact blocks beside it
   for (int i = 0; i < N;) {
     if (c.contact[i]) {
       ++i;
       continue;
     }
-    int j = i;
-    while (j + 1 < N && !c.contact[j + 1]) ++j;
-    const int n = j - i + 1;
-    segs_.push_back(GrooveRun{i, n, &store.shapes().of({i, j + 1}, RunShape::kSample), i > 0, j + 1 < N});
-    i = j + 1;
+    int j = i + 1;
+    while (j < N && !c.contact[j]) ++j;
+    std::fill(seg_of.begin() + i, seg_of.begin() + j, static_cast<int>(segs_.size()));
+    segs_.push_back(GrooveRun{i, j - i, &store.shapes().of({i, j}, RunShape::kSample)});
+    i = j;
   }
 
-  // Groove index -> segment, to find the segments each contact block borders.
-  std::vector<int> seg_of(N, -1);
-  for (int k = 0; k < static_cast<int>(segs_.size()); ++k)
-    for (int r = 0; r < segs_[k].n; ++r) seg_of[segs_[k].first + r] = k;
   for (int j = 0; j < N; ++j) {
     if (!c.contact[j]) continue;
     Edge e;
     e.block = j;
-    if (c.K_int > 0) {
-      if (j > 0 && !c.contact[j - 1]) {
-        e.seg[e.nseg] = seg_of[j - 1];
-        e.row[e.nseg++] = segs_[seg_of[j - 1]].n - 1;
-      }
-      if (j + 1 < N && !c.contact[j + 1]) {
-        e.seg[e.nseg] = seg_of[j + 1];
-        e.row[e.nseg++] = 0;
-      }
+    EdgeForce f;
+    for (int nb : {j - 1, j + 1}) {
+      if (!(c.K_int > 0) || nb < 0 || nb >= N || c.contact[nb]) continue;
+      const int g = seg_of[nb];
+      const GrooveRun& s = segs_[g];
+      const int n = e.nseg++;
+      e.seg[n] = g, e.row[n] = nb - s.first;
+      f.k[n] = c.spring_between(j, nb);
+      f.term[n] = 2 * g + (e.row[n] == 0 ? 0 : 1);
+      const double* row = s.shape->row(e.row[n]);
+      for (int k = 0; k < s.n; ++k) e.march.add_mode(f.k[n] * row[k], s.shape->modes[k], s.first + k);
     }
     // A block beside no groove has the slider's slope, shared by all such blocks on a chain
     // whose slider springs are equal (CommonSlopeSum sums them at once); where they differ it is
@@ -48,15 +47,7 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
       interior_.blocks.push_back(j);
       continue;
     }
-    EdgeForce f;
     f.n = e.nseg;
-    for (int n = 0; n < e.nseg; ++n) {
-      const GrooveRun& s = segs_[e.seg[n]];
-      const double* row = s.shape->row(e.row[n]);
-      f.k[n] = c.spring_between(j, e.row[n] == 0 ? s.first : s.first + s.n - 1);
-      f.term[n] = 2 * e.seg[n] + (e.row[n] == 0 ? 0 : 1);
-      for (int k = 0; k < s.n; ++k) e.march.add_mode(f.k[n] * row[k], s.shape->modes[k], s.first + k);
-    }
     if (e.nseg) e.march.finish();
     edges_.forces.push_back(f);
     edges_.list.push_back(std::move(e));
@@ -65,8 +56,6 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
   edges_.order.reserve(edges_.list.size());
 }
 
-// Segment s's record at t0: kept where the active set holds it (a settled run is on its path, a
-// modal groove run's modes are moved to t0), projected from u and v otherwise.
 void QuietPhase::take_record(const Chain& c, const GrooveRun& s, const double* u, const double* v) {
   const BlockRange r{s.first, s.first + s.n};
   const RunStore::Run* held = store_.exact(r);

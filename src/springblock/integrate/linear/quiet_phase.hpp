@@ -2,12 +2,8 @@
 // Exact propagation of the chain while every contact block is stuck (nothing slides).
 //
 // Stuck blocks do not move. Each maximal run of groove blocks (a segment) between stuck blocks
-// or a chain end is then an independent linear system
-//   m u'' + m gamma u' + K_seg u = K_s v t 1 + b,
-// K_seg = K_s I + K_int (path Laplacian; +1 on an end's diagonal where a stuck block holds it,
-// nothing at a free chain end), b = K_int x (the stuck neighbours' positions). Around the affine
-// particular solution u_p = A + B t (K_seg B = K_s v 1, K_seg A = b - m gamma B) the modes of
-// K_seg are damped oscillators solved in closed form (damped_mode.hpp).
+// or a chain end is then an independent linear system, run_shape.hpp's equation without kinetic
+// friction: an affine path plus damped modes in closed form.
 //
 // Each segment is a record of the run store (run_store.hpp), with its modes at the phase's start
 // t0: a segment the active set holds already (settled on its path, or a modal groove run) keeps
@@ -31,6 +27,7 @@
 
 #include "springblock/integrate/linear/coords.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
+#include "springblock/integrate/linear/envelope.hpp"
 #include "springblock/integrate/linear/run_store.hpp"
 #include "springblock/model.hpp"
 #include "springblock/observe/ringing_forces.hpp"
@@ -42,8 +39,7 @@ class QuietPhase {
   // A maximal run of grooves between stuck blocks or chain ends.
   struct GrooveRun {
     int first, n;
-    const RunShape* shape;
-    bool left_stuck, right_stuck;
+    const RunShape* shape;  // its path's left and right flags: a stuck block holds that end
     double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
     double sample_dead_tau = 0;  // after this they are below the sample scales (samples skip them)
   };
@@ -70,13 +66,12 @@ class QuietPhase {
 
   // Exact u, v of every groove block at time t >= t0 (other entries untouched).
   void evaluate(double t, double* u, double* v);
-  // The same at a sequence of increasing sample times spaced by set_sample_dt's dt (any other
-  // spacing falls back to the closed form), in two halves: the modal coordinates brought to
-  // sample time t, then the rows written from them (write_sample needs the advance_sample of the
-  // same t before it). With ends_only, only the groove blocks next to a contact block are exact
-  // (O(modes) per segment instead of O(n^2)); the others are left untouched. Enough for an
-  // observer that reads only the contact blocks' forces.
-  void set_sample_dt(double dt);
+  // The same at a sequence of increasing sample times spaced by the store's sample spacing
+  // (RunShapes::set_sample_dt; any other spacing falls back to the closed form), in two halves:
+  // the modal coordinates brought to sample time t, then the rows written from them (write_sample
+  // needs the advance_sample of the same t before it). With ends_only, only the groove blocks next
+  // to a contact block are exact (O(modes) per segment instead of O(n^2)); the others are left
+  // untouched. Enough for an observer that reads only the contact blocks' forces.
   // The recurrence restarts from the closed form at the phase's first sample, after a gap in
   // the spacing, and at every sample whose index is a multiple of kSampleBlock: a sample's value
   // then depends only on its index and the phase, not on which samples were served before it
@@ -97,13 +92,11 @@ class QuietPhase {
   // The first threshold crossing in (t0, t_limit].
   Next next_threshold(const Chain& c, double t_limit);
 
-  int distinct_decompositions() const { return store_.shapes().size(); }
-
-  // Samples for an observer of contact forces only (write_sample with ends_only, sample_affine)
-  // drop a segment's modes once every row's transient is below eps_u in u and eps_v in v: the active
-  // set's settle scales (0.1 x the stepper's absolute tolerances), so a sample's forces carry at
-  // most K_int eps_u per contact block beside a groove. The dynamics (evaluate, next_threshold)
-  // keeps them to round-off. Without this call samples keep them to round-off too.
+  // Samples for an observer of contact forces only (write_sample with ends_only, RingingForces,
+  // all_dead_after) drop a segment's modes once every row's transient is below eps_u in u and eps_v
+  // in v: the active set's settle scales (0.1 x the stepper's absolute tolerances), so a sample's
+  // forces carry at most K_int eps_u per contact block beside a groove. The dynamics (evaluate,
+  // next_threshold) keeps them to round-off. Without this call samples keep them to round-off too.
   void set_sample_scales(double eps_u, double eps_v) { scales_ = {eps_u, eps_v}; }
 
   // The time after which every segment's modes are below the sample scales: from then on every
@@ -127,10 +120,9 @@ class QuietPhase {
   // and the end of the phase once next_threshold found it (+inf before).
   const std::vector<int>& live_segments() const { return live_; }
   double t_next() const { return span_.next; }
-  const std::vector<Edge>& edges() const { return edges_.list; }
   const std::vector<EdgeForce>& edge_forces() const { return edges_.forces; }
   const std::vector<double>& interior_forces() const { return interior_.a; }
-  const Coords& cursor() const { return cursor_.at.x; }
+  const Coords& cursor() const { return cursor_.x; }
   long phases() const { return interior_.phase; }  // phases begun so far
 
  private:
@@ -145,12 +137,10 @@ class QuietPhase {
     std::vector<double> a;
     long phase = 0;
   };
-  struct Scales {
-    double u = 0, v = 0;
-  };
   // advance_sample's modes and their time, and whether they hold a sample of this phase.
   struct Cursor {
-    Moment at;
+    double t = 0;
+    Coords x;
     bool valid = false;
   };
 

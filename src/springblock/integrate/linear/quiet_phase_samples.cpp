@@ -1,5 +1,6 @@
 // The quiet phase's output: the grooves' exact u, v at a time (evaluate) and at the samples
-// inside the phase (sample), from the segments' records begun by QuietPhase::begin.
+// inside the phase (advance_sample, write_sample), from the segments' records begun by
+// QuietPhase::begin.
 #include <algorithm>
 #include <cmath>
 
@@ -16,8 +17,7 @@ void QuietPhase::write_segment(const GrooveRun& s, double t, bool live, const do
     else store_.write_path(rec, t, u, v);
     return;
   }
-  // Interior rows are left as they are: the caller's observer does not read them.
-  for (int i : {s.left_stuck ? s.first : -1, s.right_stuck ? s.first + s.n - 1 : -1}) {
+  for (int i : {s.shape->path.left ? s.first : -1, s.shape->path.right ? s.first + s.n - 1 : -1}) {
     if (i < 0) continue;
     u[i] = live ? store_.row_u(i, t, q) : store_.path_u(i, t);
     v[i] = live ? store_.row_v(i, qd) : store_.B(i);
@@ -33,26 +33,22 @@ void QuietPhase::evaluate(double t, double* u, double* v) {
   }
 }
 
-void QuietPhase::set_sample_dt(double dt) { store_.shapes().set_sample_dt(dt); }
-
 void QuietPhase::advance_sample(double t, bool ends_only) {
   const double tau = t - span_.t0;
   // The recurrence needs the previous sample one spacing back; the clock's times k dt differ
   // from that by round-off only. Restart from the closed form at every block start (header).
   const double dt = store_.shapes().sample_dt();
-  const bool step = cursor_.valid && dt > 0 && std::fabs((t - cursor_.at.t) - dt) <= 1e-9 * dt &&
+  const bool step = cursor_.valid && dt > 0 && std::fabs((t - cursor_.t) - dt) <= 1e-9 * dt &&
                     std::llround(t / dt) % kSampleBlock != 0;
   for (int k : live_) {
     const GrooveRun& s = segs_[k];
-    // An observer that reads only contact forces (ends_only) takes the modes as gone once they
-    // are below the settle scales; one that reads every row gets them to round-off.
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
     if (!live) continue;
-    Coords& x = cursor_.at.x;
+    Coords& x = cursor_.x;
     if (step) s.shape->step_sample(x.q.data() + s.first, x.p.data() + s.first);
     else store_.coords(store_.run(s.first), t, x.q.data(), x.p.data());
   }
-  cursor_.at.t = t;
+  cursor_.t = t;
   cursor_.valid = true;
 }
 
@@ -60,7 +56,7 @@ void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) {
   const double tau = t - span_.t0;
   for (const GrooveRun& s : segs_) {
     const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
-    write_segment(s, t, live, cursor_.at.x.q.data(), cursor_.at.x.p.data(), u, v, ends_only);
+    write_segment(s, t, live, cursor_.x.q.data(), cursor_.x.p.data(), u, v, ends_only);
   }
 }
 

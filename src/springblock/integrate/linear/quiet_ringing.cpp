@@ -58,13 +58,10 @@ void QuietRinging::sums(long k0, double dt, long n, double* sum) {
     d.evolve(phase_.store().q0() + s.first, phase_.store().p0() + s.first, tau1, q1, p1);
     const double* q = w0_.q.data() + s.first;
     const double* p = w0_.p.data() + s.first;
-    const double* first_row = d.row(0);
-    const double* last_row = d.row(s.n - 1);
-    double first = 0, last = 0;
-    for (int k = 0; k < s.n; ++k) {
-      const double Sq = d.steps.sample_sum[k][0] * (q[k] - q1[k]) + d.steps.sample_sum[k][1] * (p[k] - p1[k]);
-      first += first_row[k] * Sq, last += last_row[k] * Sq;
-    }
+    for (int k = 0; k < s.n; ++k)  // each mode's sum over the stretch, in place of its modes at the end
+      q1[k] = d.steps.sample_sum[k][0] * (q[k] - q1[k]) + d.steps.sample_sum[k][1] * (p[k] - p1[k]);
+    double first, last;
+    d.end_rows(q1, first, last);
     sum[2 * g] = first, sum[2 * g + 1] = last;
   }
 }
@@ -77,7 +74,7 @@ void QuietRinging::series(long k0, double dt, long n, const int* slot, double* v
     const QuietPhase::GrooveRun& s = phase_.segments()[g];
     if (slot[g] < 0 || !(tau0 <= s.sample_dead_tau)) continue;
     const RunShape& d = *s.shape;
-    double* q = w1_.q.data() + s.first;  // sums() is done with them: a working copy
+    double* q = w1_.q.data() + s.first;  // a working copy
     double* p = w1_.p.data() + s.first;
     std::copy(w0_.q.begin() + s.first, w0_.q.begin() + s.first + s.n, q);
     std::copy(w0_.p.begin() + s.first, w0_.p.begin() + s.first + s.n, p);

@@ -39,7 +39,8 @@ class QuietRinging final : public RingingForces {
 
  private:
   const QuietPhase& phase_;
-  Coords w0_, w1_;  // per slot: modes at a stretch's first sample (bounds) and past its last live one
+  // Per slot: the modes at a stretch's first sample (bounds); work space of sums and series.
+  Coords w0_, w1_;
   bool summed_ = false;
 };
 

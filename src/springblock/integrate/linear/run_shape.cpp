@@ -18,6 +18,13 @@ namespace {
 // some 5 % more.
 constexpr double kStepRadians = 0.75;
 
+// The exact stepper's step for chain c.
+double step_for(const Chain& c) {
+  // Every run's modes are below sqrt((K_s + 4 K_int) / m); an overdamped mode decays no faster
+  // than gamma. The step is set by the faster of the two, so the Taylor bound above holds for all.
+  return kStepRadians / std::max(c.omega_max(), c.gamma);
+}
+
 // The modes of a run in closed form. Its stiffness is K_s I + K_int L, L the Laplacian of a path
 // of n blocks whose end rows lose their outer spring at a free chain end. With every block alike,
 // L's eigenvectors are sampled sines and cosines (the discrete sine and cosine transforms),
@@ -73,22 +80,6 @@ void Factors::solve(const double* f, double* y) const {
   for (int r = n - 2; r >= 0; --r) y[r] -= upper[r] * y[r + 1];
 }
 
-Eigen::MatrixXd Factors::dense() const {
-  const int n = static_cast<int>(diag.size());
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (int r = 0; r < n; ++r) {
-    K(r, r) = diag[r];
-    if (r + 1 < n) K(r, r + 1) = K(r + 1, r) = off[r];
-  }
-  return K;
-}
-
-double RunShapes::step_for(const Chain& c) {
-  // Every run's modes are below sqrt((K_s + 4 K_int) / m); an overdamped mode decays no faster
-  // than gamma. The step is set by the faster of the two, so the Taylor bound above holds for all.
-  return kStepRadians / std::max(c.omega_max(), c.gamma);
-}
-
 RunShapes::RunShapes(const Chain& c)
     : c_(c), step_(step_for(c)), march_step_(EdgeMarch::grid_step(c.omega_max())) {}
 
@@ -101,11 +92,9 @@ const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts)
   return sh;
 }
 
-// K: each block's slider spring plus the springs to the neighbours that exist (inside the run,
-// or the stuck block holding an end), minus those springs beside the diagonal. The path: K B =
-// (K_s,i v), a0 = K^-1 (-m_i gamma B_i), gL and gR = K^-1 of the holding springs at the ends. The
-// modes: the closed form on a chain of identical blocks (r then stands for every run of its
-// length and ends), the general solver on one whose blocks differ.
+// K and the path's pieces (run_shape.hpp) from each block's own values: K's diagonal K_s,i plus
+// the springs to block i's neighbours, K B = (K_s,i v), a0 = K^-1 (-m_i gamma B_i), gL and gR =
+// K^-1 of the holding springs at the ends.
 RunShape RunShapes::make(BlockRange r, bool left, bool right) const {
   const Chain& c = c_;
   const int n = r.size(), lo = r.lo;
@@ -165,8 +154,7 @@ void RunShapes::finish_modes(RunShape& sh, double mass, double gamma) {
 }
 
 // Each transition costs two mode evaluations (an exp and a sincos), so a shape makes only those
-// its users ask for: the exact stepper's runs the grid step's, the modal runs EdgeMarch's and
-// the sample spacing's, the quiet phase's segments the sample spacing's.
+// its users ask for (what each owner of a run asks for: parts_for, run_store.cpp).
 void RunShapes::add_parts(RunShape& sh, std::uint8_t parts) const {
   Transitions& st = sh.steps;
   const std::uint8_t missing = parts & ~st.parts;

@@ -45,8 +45,6 @@ struct Factors {
   void factor();
   // y = K^-1 f (y may be f).
   void solve(const double* f, double* y) const;
-  // The dense K (checks and diagnostics).
-  Eigen::MatrixXd dense() const;
 };
 
 // The affine path's pieces: B, and A = a0 + u_left gL + u_right gR - K^-1 f_kin, with whether a
@@ -118,7 +116,7 @@ struct RunShape {
 
 class RunShapes {
  public:
-  // Transitions over the exact stepper's step (step_for) and EdgeMarch's grid step.
+  // Transitions over the exact stepper's step (step()) and EdgeMarch's grid step.
   explicit RunShapes(const Chain& c);
   // The shape of run r of the chain, with the transitions `parts` (RunShape::Parts) made.
   // References stay valid for the life of this object. A uniform chain's shapes depend on the
@@ -131,11 +129,10 @@ class RunShapes {
   // Sample transitions of every shape, present and future.
   void set_sample_dt(double dt);
   double sample_dt() const { return sample_dt_; }
+  // The exact stepper's step: 0.75 rad of the fastest rate any run's mode can have.
   double step() const { return step_; }
   double march_step() const { return march_step_; }
   int size() const { return static_cast<int>(shapes_.size() + by_content_.size()); }
-  // The exact stepper's step for chain c: 0.75 rad of the fastest rate any run's mode can have.
-  static double step_for(const Chain& c);
 
  private:
   // The shape of run r, a stuck block holding its left and right ends as the flags say (on a

@@ -1,9 +1,15 @@
 // The shapes of a chain whose blocks differ in slider spring, mass or internal springs: one per
 // run, from the run's own blocks (RunShapes::make, run_shape.cpp), shared by the runs whose blocks
-// are equal.
+// are equal; and their modes (general_modes.hpp).
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
+#include "springblock/integrate/linear/general_modes.hpp"
 #include "springblock/integrate/linear/run_shape.hpp"
 
 namespace sb::event_detail {
@@ -33,6 +39,20 @@ std::vector<double> RunShapes::general_key(BlockRange r) const {
   key.push_back(r.lo > 0 ? c.spring(r.lo - 1) : -1.0);
   key.push_back(r.hi < c.N ? c.spring(r.hi - 1) : -1.0);
   return key;
+}
+
+void general_modes(const Factors& K, const std::vector<double>& w, Eigen::MatrixXd& Q, std::vector<double>& lambda) {
+  const int n = static_cast<int>(K.diag.size());
+  if (static_cast<int>(w.size()) != n) throw std::logic_error("general_modes: one weight per row");
+  Eigen::VectorXd inv_sqrt_w(n), diag(n), sub(std::max(n - 1, 0));
+  for (int r = 0; r < n; ++r) inv_sqrt_w[r] = 1.0 / std::sqrt(w[r]);
+  for (int r = 0; r < n; ++r) diag[r] = K.diag[r] * inv_sqrt_w[r] * inv_sqrt_w[r];
+  for (int r = 0; r + 1 < n; ++r) sub[r] = K.off[r] * inv_sqrt_w[r] * inv_sqrt_w[r + 1];
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es;
+  es.computeFromTridiagonal(diag, sub, Eigen::ComputeEigenvectors);
+  if (es.info() != Eigen::Success) throw std::runtime_error("general_modes: the eigensolver did not converge");
+  Q = inv_sqrt_w.asDiagonal() * es.eigenvectors();
+  lambda.assign(es.eigenvalues().data(), es.eigenvalues().data() + n);
 }
 
 }  // namespace sb::event_detail

@@ -77,8 +77,6 @@ RunStore::Run& RunStore::Records::claim(BlockRange r, const RunShape* shape, Own
   return run;
 }
 
-void RunStore::drop(int lo) { records_.drop(lo); }
-
 // A = a0 + u_left gL + u_right gR - K^-1 f_kin and B from the shape's pieces (run_shape.hpp).
 void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir) {
   const RunShape& sh = *run.shape;
@@ -123,8 +121,6 @@ const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, c
   return run;
 }
 
-// The bounds each owner reads: the exact stepper's screen those on the derivatives of its end
-// rows and sliding blocks, a modal run's neighbours the deviation of its end rows.
 void RunStore::set_bounds(const Run& run, const std::int8_t* dir) {
   if (run.owner != kModal && run.owner != kSpan) return;
   const int n = run.n();

@@ -57,7 +57,7 @@ class RunStore {
                      const std::int8_t* dir, Owner owner, bool with_modes = true);
   // The run starting at block lo with its coordinates moved to origin t (the closed form).
   void rebase(int lo, double t);
-  void drop(int lo);
+  void drop(int lo) { records_.drop(lo); }
 
   const Run& run(int i) const { return records_.run(i); }
   Owner owner(int i) const { return records_.holds(i) ? records_.run(i).owner : kNone; }

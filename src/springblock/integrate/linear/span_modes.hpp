@@ -13,8 +13,8 @@
 // 0.75 rad of the fastest rate any run of the chain can have. H only sets how often the screen
 // looks: a full step moves each mode by its exact transition over H, computed once per run
 // shape; the move to an event inside a step, or to any other time, uses the closed form itself.
-// The grid recurrence restarts from the closed form every kResync steps, so its round-off never
-// accumulates.
+// The grid recurrence restarts from the closed form every kSpanResync steps, so its round-off
+// never accumulates.
 //
 // The state lives in the modes: each run keeps its coordinates at its current time t0 and at
 // the end t1 of the step it is taking; the blocks' u and v in the chain's State are written only
@@ -38,7 +38,7 @@ class SpanModes {
   static constexpr int kDegree = 12;
 
   SpanModes(const Chain& c, RunStore& store);
-  // The longest step (RunShapes::step_for).
+  // The longest step (RunShapes::step).
   double H() const { return H_; }
   const RunStore& store() const { return store_; }
 

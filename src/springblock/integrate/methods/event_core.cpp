@@ -58,7 +58,6 @@ void EventCore::reclassify(bool from_scratch) {
   sw.clear_touched();
 }
 
-// Every sliding block is flagged (only flagged blocks switch, and one that starts stops none).
 bool EventCore::may_go_quiet() const {
   int stopping = 0;
   for (int i : sw.flagged()) stopping += s.dir[i] != 0;

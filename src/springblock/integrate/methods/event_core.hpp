@@ -9,38 +9,14 @@
 
 #include "springblock/integrate/events/active_set.hpp"
 #include "springblock/integrate/events/switching.hpp"
-#include "springblock/integrate/methods/clock_audit.hpp"
 #include "springblock/integrate/linear/run_store.hpp"
+#include "springblock/integrate/methods/event_options.hpp"
 #include "springblock/model.hpp"
 #include "springblock/observe/observer.hpp"
 #include "springblock/sample_schedule.hpp"
 #include "springblock/state.hpp"
 
 namespace sb::event_detail {
-
-struct EventOptions {
-  double tol;
-  bool fast_forward;     // exact quiet phases, settled and modal runs (off: the tests' reference)
-  int modal_max_run;     // see EventDriven::set_modal_max_run
-  int modal_max_groove;  // see EventDriven::set_modal_max_groove
-  bool exact_stepper;    // the stepped runs move by their modes (span_modes.hpp), not Dormand-Prince
-  int exact_max_run;     // ... while no stepped run is longer than this (Dormand-Prince otherwise)
-  // Diagnostics: the times of the instants with a switch, and the exact stepper's audit
-  // (nullptr: none).
-  struct Diagnostics {
-    std::vector<double>* switch_log = nullptr;
-    ClockAudit* audit = nullptr;  // EventDriven::set_clock_audit
-  } diag;
-  // What the observer reads (Observer::reads_groove_interiors, reads_only_friction), asked once:
-  // an observer of contact blocks' forces only needs the groove segments' end rows at
-  // quiet-phase samples (O(N) per sample instead of O(sum n^2) for long grooves), one of
-  // friction forces only the exact stepper's end rows.
-  bool ends_only = false;
-  bool friction_only = false;
-  // The observer sums the contact forces from what the active set knows of them at the samples of
-  // an active phase (Observer::takes_active_forces): only the live blocks' neighbours are written.
-  bool active_forces = false;
-};
 
 // When the stepped runs changed, and which blocks switched since. Every change to the stepped
 // runs that a stepper did not make itself (a reclassification, a promotion, time moved past
@@ -88,7 +64,8 @@ class EventCore {
   // are brought to s.t (bring_runs: a quiet phase has brought every block there itself); then
   // classify the runs again.
   void switch_now(bool bring_runs = true);
-  // Every sliding block is flagged: the switch may leave nothing sliding.
+  // Every sliding block is flagged: the switch may leave nothing sliding (only flagged blocks
+  // switch, and one that starts stops none).
   bool may_go_quiet() const;
   // A sample at s.t if one is due; write_runs() first brings the stepped runs to s.t.
   template <class Write>
@@ -124,16 +101,17 @@ void EventCore::sample_if_due(Write&& write_runs) {
   WorkTimer timer(s.work, s.work.sampling_s);
   ++s.work.samples;
   write_runs();
-  if (!opt.active_forces) {
+  if (!opt.active_forces || obs.needs_positions_at(s.t))
     active.materialise(s.t, s.u.data(), s.v.data(), true, opt.ends_only);
-    obs.sample(c, s);
-  } else {
+  else
+    active.materialise_live(s.t, s.u.data(), s.v.data());
+  if (opt.active_forces) {
     // The forces known at the sample serve it whether or not the positions are written too, so a
     // sample's value does not depend on whether some observer needs the positions there.
-    if (obs.needs_positions_at(s.t)) active.materialise(s.t, s.u.data(), s.v.data(), true, opt.ends_only);
-    else active.materialise_live(s.t, s.u.data(), s.v.data());
     obs.sample_active(c, s, active.forces().view());
     active.forces_delivered();
+  } else {
+    obs.sample(c, s);
   }
   clock.advance();
 }

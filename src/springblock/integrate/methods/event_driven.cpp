@@ -9,20 +9,15 @@ void EventDriven::run(const Chain& c, State& s, double t_end, double sample_dt, 
   const auto e = c.effects();
   // Without internal springs every block is its own system: solved exactly, block by block
   // (uncoupled.hpp). With fast-forward off the stepper runs instead (the tests' reference).
-  if (!e.coupled && fast_forward_) {
-    event_detail::run_uncoupled(c, s, t_end, sample_dt, obs, switch_log_);
+  if (!e.coupled && opt_.fast_forward) {
+    event_detail::run_uncoupled(c, s, t_end, sample_dt, obs, opt_.diag.switch_log);
     return;
   }
-  const event_detail::EventOptions opt{tol_,
-                                       fast_forward_,
-                                       modal_max_run_,
-                                       modal_max_groove_,
-                                       exact_stepper_ && fast_forward_,
-                                       exact_max_run_,
-                                       {switch_log_, audit_},
-                                       !obs.reads_groove_interiors(),
-                                       obs.reads_only_friction(),
-                                       fast_forward_ && obs.takes_active_forces()};
+  event_detail::EventOptions opt = opt_;
+  opt.exact_stepper = opt.exact_stepper && opt.fast_forward;
+  opt.ends_only = !obs.reads_groove_interiors();
+  opt.friction_only = obs.reads_only_friction();
+  opt.active_forces = opt.fast_forward && obs.takes_active_forces();
   event_detail::EventRun run(c, s, t_end, sample_dt, obs, opt);
   if (e.coupled && e.damped) run.run<true, true>();
   else if (e.coupled) run.run<true, false>();

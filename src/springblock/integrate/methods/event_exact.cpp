@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 
 namespace sb::event_detail {
 
@@ -46,7 +46,7 @@ void ExactEvolve::project() {
     while (o < old_.size() && old_[o].lo < g.lo) ++o;
     same = same && o < old_.size() && old_[o].lo == g.lo && old_[o].hi == g.hi;
     const bool keep = same && !old_[o].stale;
-    if (audit != nullptr) audit->take(keep, same && !keep);
+    if (audit != nullptr && same) ++(keep ? audit->kept : audit->renewed);
     if (keep) {
       Group& was = old_[o];
       if (audit != nullptr && !screen_.current(s, spans_, core_.active, was.watch))
@@ -115,11 +115,10 @@ void ExactEvolve::step_group(Group& g) {
     for (int k = g.k0; k < g.k1; ++k) s.work.block_steps += spans_.spans()[k].size();
     spans_.advance(g.k0, g.k1, H);
   }
-  double tau;
-  {
+  const double tau = [&] {
     WorkTimer timer(s.work, s.work.event_location_s);
-    tau = screen_.locate(core_.c, s, spans_, core_.active, g.watch, spans_.t0(g.k0), H);
-  }
+    return screen_.locate(core_.c, s, spans_, core_.active, g.watch, spans_.t0(g.k0), H);
+  }();
   ++s.steps;
   g.h = H, g.tau = tau;
   g.t1 = spans_.t0(g.k0) + (g.event() ? tau : H);

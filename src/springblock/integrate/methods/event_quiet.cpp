@@ -32,15 +32,14 @@ bool QuietEvolve::pays() const {
 
 bool QuietEvolve::phase() {
   State& s = core_.s;
-  QuietPhase::Next next;
-  {
+  const QuietPhase::Next next = [&] {
     WorkTimer timer(s.work, s.work.quiet_s);
     // The phase begins from the whole state: the settled and modal runs from their records (the
     // stepped ones are the stepper's, written when the last sliding block stopped).
     core_.active.materialise(s.t, s.u.data(), s.v.data());
     quiet_.begin(core_.c, s.t, s.u.data(), s.v.data());
-    next = quiet_.next_threshold(core_.c, core_.t_end);
-  }
+    return quiet_.next_threshold(core_.c, core_.t_end);
+  }();
   if (!serve_samples(next.t)) return false;
   {
     WorkTimer timer(s.work, s.work.quiet_s);
@@ -69,32 +68,28 @@ bool QuietEvolve::serve_samples(double t_next) {
   affine_ready_ = false;
   long long next_offer = core_.clock.index();  // a declined stretch is not offered again sample by sample
   while (core_.clock.next() < t_next) {
+    // An affine stretch, else a block of sums, else one sample (a stretch not taken leaves `stopped` false).
     bool stopped = false;
-    if (core_.clock.next() >= dead_after && sample_affine_stretch(t_next, stopped)) {
-      if (stopped) return false;
-      continue;
+    const bool stretch = (core_.clock.next() >= dead_after && sample_affine_stretch(t_next, stopped)) ||
+                         (core_.opt.ends_only && core_.clock.index() >= next_offer &&
+                          offer_block(std::min(t_next, dead_after), stopped, next_offer));
+    if (!stretch) {
+      serve_sample(core_.clock.next());
+      took_samples(1, stopped);
     }
-    if (core_.opt.ends_only && core_.clock.index() >= next_offer && offer_block(std::min(t_next, dead_after), stopped, next_offer)) {
-      if (stopped) return false;
-      continue;
-    }
-    sample_.t = core_.clock.next();
-    serve_sample();
-    took_samples(1, stopped);
     if (stopped) return false;
   }
   return true;
 }
 
-// One sample at sample_.t from the quiet phase's modes. An observer of contact forces alone gets
-// them as the modes describe them (sample_ringing), and the rows only where it needs positions
-// too.
-void QuietEvolve::serve_sample() {
+// One sample at t from the quiet phase's modes. An observer of contact forces alone gets them as
+// the modes describe them (sample_ringing), and the rows only where it needs positions too.
+void QuietEvolve::serve_sample(double t) {
   ++core_.s.work.samples;
-  stamp_sample();
-  quiet_.advance_sample(sample_.t, core_.opt.ends_only);
-  if (!core_.opt.ends_only || core_.obs.needs_positions_at(sample_.t))
-    quiet_.write_sample(sample_.t, sample_.u.data(), sample_.v.data(), core_.opt.ends_only);
+  stamp_sample(t);
+  quiet_.advance_sample(t, core_.opt.ends_only);
+  if (!core_.opt.ends_only || core_.obs.needs_positions_at(t))
+    quiet_.write_sample(t, sample_.u.data(), sample_.v.data(), core_.opt.ends_only);
   if (core_.opt.ends_only) core_.obs.sample_ringing(core_.c, sample_, ringing_);
   else core_.obs.sample(core_.c, sample_);
 }
@@ -134,14 +129,12 @@ bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offe
         if (cursor < k0) quiet_.save_cursor();
         else if (k < cursor) quiet_.restore_cursor(), cursor = k0 - 1;
         while (cursor < k) quiet_.advance_sample(core_.clock.time_of(++cursor), true);
-        sample_.t = core_.clock.time_of(k);
-        stamp_sample();
+        stamp_sample(core_.clock.time_of(k));
         if (core_.obs.needs_positions_at(sample_.t))
           quiet_.write_sample(sample_.t, sample_.u.data(), sample_.v.data(), true);
         return sample_;
       });
-  sample_.t = core_.clock.next();
-  stamp_sample();
+  stamp_sample(core_.clock.next());
   const long used = core_.obs.sample_sums(core_.c, sample_, static_cast<long>(k0), dt, n, stretch);
   if (used < n && cursor >= k0) quiet_.restore_cursor();
   // Declined: its samples are served one by one. Offering its second half again, and so on,
@@ -161,8 +154,7 @@ bool QuietEvolve::sample_affine_stretch(double t_next, bool& stopped) {
   }
   // Samples k dt < t_next, counted exactly as the clock will produce them.
   const long long k0 = core_.clock.index(), k_end = core_.clock.first_at_or_after(t_next);
-  sample_.t = core_.clock.next();
-  stamp_sample();
+  stamp_sample(core_.clock.next());
   const long used = core_.obs.sample_affine(core_.c, sample_, static_cast<long>(k0), core_.clock.dt(), static_cast<long>(k_end - k0),
                                        AffineForces{fa_.data(), fb_.data()});
   if (used <= 0) return false;
@@ -171,12 +163,13 @@ bool QuietEvolve::sample_affine_stretch(double t_next, bool& stopped) {
   return true;
 }
 
-// Everything but the kinematics that an observer reads from a sample: the work counters and how
-// many contact blocks have slid (the all-slipped end of loading). A stale count there would defer
-// the end of loading to the next active phase that holds a sample, so mu_s would depend on the
-// sample spacing (test FirstPeak.EndOfLoadingDoesNotDependOnSampleSpacing).
-void QuietEvolve::stamp_sample() {
+// Everything but the kinematics that an observer reads from a sample at t: its time, the work
+// counters and how many contact blocks have slid (the all-slipped end of loading). A stale count
+// there would defer the end of loading to the next active phase that holds a sample, so mu_s would
+// depend on the sample spacing (test FirstPeak.EndOfLoadingDoesNotDependOnSampleSpacing).
+void QuietEvolve::stamp_sample(double t) {
   const State& s = core_.s;
+  sample_.t = t;
   sample_.steps = s.steps, sample_.rhs_evals = s.rhs_evals, sample_.switches = s.switches;
   sample_.n_slipped_once = s.n_slipped_once;
 }

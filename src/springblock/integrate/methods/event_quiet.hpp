@@ -29,9 +29,8 @@ class QuietEvolve {
 
  private:
   bool serve_samples(double t_next);
-  void serve_sample();
-  // Everything but the kinematics that an observer reads from a sample.
-  void stamp_sample();
+  void serve_sample(double t);
+  void stamp_sample(double t);
   // Quiet-phase samples once every groove has rung down: one affine stretch (false when the
   // observer took none, so the caller samples one by one).
   bool sample_affine_stretch(double t_next, bool& stopped);

@@ -31,11 +31,10 @@ void SteppedEvolve::step() {
     control_.rejected(h_try, err);
     return;
   }
-  double theta;
-  {
+  const double theta = [&] {
     WorkTimer timer(s.work, s.work.event_location_s);
-    theta = search_.locate(core_.c, s, dp_, h_try, core_.active);
-  }
+    return search_.locate(core_.c, s, dp_, h_try, core_.active);
+  }();
   const bool reached = stop.reached(clipped);
   if (theta <= 1.0) {
     step_to_event<Coupled, Damped>(spans, h_try * theta, theta == 1.0 && clipped, stop.t);

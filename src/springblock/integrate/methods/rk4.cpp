@@ -1,13 +1,14 @@
 #include "springblock/integrate/methods/rk4.hpp"
-#include "springblock/sample_schedule.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "springblock/integrate/step/chain_accel.hpp"
 #include "springblock/kernel_clones.hpp"
+#include "springblock/sample_schedule.hpp"
 #include "springblock/work_profile.hpp"
 
 // The step and the switch screen have AVX2 clones (kernel_clones.hpp). With the screen they made
@@ -169,12 +170,11 @@ int apply_switches_screened(const Chain& c, State& s, Workspace& w, int n_slidin
 // grow by K_s v per unit time. Returns a count k >= 1 such that no block exceeds its threshold
 // at steps 1..k-1 (a safe jump length); the stepper then checks step k the normal way.
 std::int64_t quiet_steps(const Chain& c, const State& s, std::int64_t n, double h, std::int64_t n_end) {
-  const double rate = c.K_s * c.v_slider * h;  // force increase per step
   double k_min = static_cast<double>(n_end - n);
   for (int i = 0; i < c.N; ++i) {
     const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
-    const double rate_i = c.blocks.uniform() ? rate : c.blocks.K_s[i] * c.v_slider * h;
-    k_min = std::min(k_min, std::floor((c.f_static[i] - F) / rate_i));
+    const double rate = c.k_s(i) * c.v_slider * h;  // force increase per step
+    k_min = std::min(k_min, std::floor((c.f_static[i] - F) / rate));
   }
   // Two steps of margin absorb rounding in the closed form; the remaining steps run normally.
   return std::max<std::int64_t>(1, static_cast<std::int64_t>(k_min) - 2);
@@ -209,11 +209,10 @@ void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer
   sample();
   while (n < n_end && !obs.wants_stop()) {
     if (all_contact && n_sliding == 0) {
-      std::int64_t jump;
-      {
+      const std::int64_t jump = [&] {
         WorkTimer timer(s.work, s.work.quiet_s);
-        jump = std::min(quiet_steps(c, s, n, h, n_end), n_end - n);
-      }
+        return std::min(quiet_steps(c, s, n, h, n_end), n_end - n);
+      }();
       if (jump > 1) {
         // Nothing moves during the jump; emit the samples it covers.
         const std::int64_t target = n + jump - 1;

@@ -14,7 +14,6 @@
 // threshold crossing. This is exact for the scheme (RK4 of a motionless chain is the identity)
 // and is the only shortcut taken.
 #include <cmath>
-#include <vector>
 
 #include "springblock/integrate/integrator.hpp"
 

@@ -7,8 +7,9 @@
 #include "springblock/integrate/linear/damped_mode.hpp"
 #include "springblock/integrate/linear/mode_stop.hpp"
 #include "springblock/integrate/events/switching.hpp"
+#include "springblock/integrate/numerics/affine_crossing.hpp"
+#include "springblock/infinity.hpp"
 #include "springblock/sample_schedule.hpp"
-#include "springblock/integrate/numerics/infinity.hpp"
 #include "springblock/work_profile.hpp"
 
 namespace sb::event_detail {
@@ -63,7 +64,6 @@ class Solver {
     }
   }
   double first_stop(int i);
-  double slip_time(int i, double t) const;
   void schedule(int i, double t_next);
   // Apply the stick/slip rules to block i at time t (after its event, or at the start).
   void apply_rules_at(int i, double t, bool event_here);
@@ -105,14 +105,6 @@ class Solver {
   };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
 };
-
-double Solver::slip_time(int i, double t) const {
-  // Stuck: F(t') = F(t) + K_s v_s (t' - t) reaches +-f_static.
-  const double F = c_.k_s(i) * (c_.v_slider * t - s_.u[i]), rate = c_.k_s(i) * c_.v_slider;
-  if (rate == 0.0) return kInf;
-  const double target = rate > 0 ? c_.f_static[i] : -c_.f_static[i];
-  return t + std::max((target - F) / rate, 0.0);
-}
 
 double Solver::first_stop(int i) {
   const Block& b = b_[i];
@@ -157,7 +149,9 @@ void Solver::apply_rules_at(int i, double t, bool event_here) {
     start_moving(i, t, s_.dir[i] * c_.f_kinetic[i]);
     schedule(i, first_stop(i));
   } else {
-    schedule(i, slip_time(i, t));
+    // Stuck: F(t') = F(t) + K_s v_s (t' - t) reaches +-f_static (never when nothing loads it).
+    const double F = c_.k_s(i) * (c_.v_slider * t - s_.u[i]), rate = c_.k_s(i) * c_.v_slider;
+    schedule(i, t + affine_crossing(F, rate, c_.f_static[i]));
   }
 }
 

@@ -9,15 +9,14 @@
 //            (groove). Around the particular solution u_p = v_s t - phi / K_s - gamma v_s / omega^2
 //            the deviation x = u - u_p is one damped mode (damped_mode.hpp), so u and v are
 //            closed form at any time.
-// A sliding block stops at the first tau > 0 with dir (v_s + x'(tau)) <= 0. x' is monotone
-// between consecutive zeros of x'' (itself a damped-mode trajectory, whose zeros are closed form),
-// so each such interval holds at most one root, found to round-off in t by Newton steps kept
-// inside the interval (the slope x'' comes with every evaluation); no grid and no grazing bound
-// are needed. If the block moves forward (dir v_s > 0) and the mode's energy
-// bound sqrt(x'^2 + omega^2 x^2) (never increasing) is below v_s (1 + 1e-12), it never stops: a
-// creeping block (mu_d clipped to mu_s) has no further event at all, also without damping, where
-// its velocity touches 0 once per period. A release whose pull falls short of kinetic friction
-// by round-off only starts from exact force balance (same tolerance as switching.hpp).
+// A sliding block stops at the first tau > 0 with dir (v_s + x'(tau)) <= 0, found to round-off in
+// t between consecutive zeros of x'', with no grid and no grazing bound (first_stop_tau,
+// linear/mode_stop.hpp). If the block moves forward (dir v_s > 0) and the mode's energy bound
+// sqrt(x'^2 + omega^2 x^2) (never increasing) is below v_s (1 + 1e-12, round_off.hpp's stop
+// margin), it never stops: a creeping block (mu_d clipped to mu_s) has no further event at all,
+// also without damping, where its velocity touches 0 once per period. A release whose pull falls
+// short of kinetic friction by round-off only starts from exact force balance (same tolerance as
+// switching.hpp).
 // At an event the stick/slip rules of switching.hpp apply to the one block (a stopped block
 // slides on if its force exceeds f_static; a released block that cannot move against a larger
 // kinetic friction stops again), with the same cascade guard.

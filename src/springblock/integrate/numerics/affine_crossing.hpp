@@ -2,10 +2,11 @@
 // The first tau >= 0 at which an affine force a + b tau reaches the threshold +-f it is heading
 // for (|a| <= f assumed), in closed form; never (kInf) when nothing loads it (b = 0). A stuck
 // block's crossing wherever its force is affine: the active set's stuck blocks, the quiet phase's
-// blocks beside no ringing groove, an edge whose modes have died out.
+// blocks beside no ringing groove, an edge whose modes have died out, the uncoupled solver's stuck
+// blocks.
 #include <algorithm>
 
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 
 namespace sb {
 

@@ -25,7 +25,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "springblock/integrate/numerics/infinity.hpp"
+#include "springblock/infinity.hpp"
 
 namespace sb::event_detail {
 
@@ -87,9 +87,7 @@ template <class GD, class Width>
 double first_root_newton(GD gd, double lo, double glo, double hi, double ghi, Width width, double x, double gx,
                          double dgx) {
   int kept = 0;  // +1: lo kept last time, -1: hi kept last time
-  bool was_newton = false;
   const bool have = x != kInf;  // x, gx, dgx: the last evaluation (from it > 0 on, or given)
-  double w_before = kInf;
   int stalled = 0;  // Newton points in a row after which the bracket had not halved
   for (int it = 0; it < 200; ++it) {
     const double w = hi - lo, tol = width(hi);
@@ -100,12 +98,11 @@ double first_root_newton(GD gd, double lo, double glo, double hi, double ghi, Wi
       mid = x + step + std::copysign(0.25 * tol, step);
       if (!(mid > lo && mid < hi)) mid = kInf;
     }
-    was_newton = mid != kInf;
+    const bool was_newton = mid != kInf;
     if (!was_newton) {
       mid = hi - ghi * (hi - lo) / (ghi - glo);
       if (!(mid > lo + 1e-3 * w && mid < hi - 1e-3 * w)) mid = 0.5 * (lo + hi);
     }
-    w_before = w;
     gd(mid, gx, dgx);
     x = mid;
     if (gx > 0) {
@@ -117,7 +114,7 @@ double first_root_newton(GD gd, double lo, double glo, double hi, double ghi, Wi
       if (kept == 1) glo *= 0.5;
       kept = 1;
     }
-    stalled = was_newton && hi - lo > 0.5 * w_before ? stalled + 1 : 0;
+    stalled = was_newton && hi - lo > 0.5 * w ? stalled + 1 : 0;
   }
   return hi;
 }

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#include "springblock/kernel_clones.hpp"
-
 namespace sb::event_detail {
 
 Dopri5::Dopri5(int N) : N_(N), store_(14 * static_cast<std::size_t>(N)), ut_(N), u1_(N) {

@@ -7,7 +7,6 @@
 // elsewhere, see active_set.hpp); the blocks bordering a span must hold their constant
 // positions in u and in the trial array, which set_frozen() copies. No allocation after
 // construction.
-#include <algorithm>
 #include <vector>
 
 #include "springblock/integrate/block_range.hpp"
@@ -71,8 +70,6 @@ class Dopri5 {
   const double* u1() const { return u1_.data(); }
   // The new velocities are stage 7's velocity slope (c7 = 1, a7 = b): stored once, as k_[6].
   const double* v1() const { return k_[6]; }
-  // Acceleration at the start of the step (stage 1).
-  const double* a0() const { return k_[7]; }
 
  private:
   double dense(const double* y0, const double* y1, int k_base, int i, double theta) const;

@@ -1,7 +1,7 @@
 #pragma once
 // "Never" for event times and bounds (no crossing, no stop, no limit), defined once for the
-// integrators: a definition per source, in an anonymous namespace, would clash when two such
-// sources share a unity-build translation unit (SPRINGBLOCK_UNITY_BUILD).
+// integrators and the observers: a definition per source, in an anonymous namespace, would clash
+// when two such sources share a unity-build translation unit (SPRINGBLOCK_UNITY_BUILD).
 #include <limits>
 
 namespace sb {
