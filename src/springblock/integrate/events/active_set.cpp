@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 namespace sb::event_detail {
 namespace {
@@ -19,6 +20,14 @@ std::uint64_t load8(const void* p) {
 constexpr std::uint64_t kOnes = 0x0101010101010101ULL;
 // A settled run's neglected transient, as a fraction of the stepper's absolute tolerance.
 constexpr double kSettleFrac = 0.1;
+
+// lo in or out of the sorted list.
+void keep_listed(std::vector<int>& list, int lo, bool in) {
+  const auto at = std::lower_bound(list.begin(), list.end(), lo);
+  const bool held = at != list.end() && *at == lo;
+  if (in && !held) list.insert(at, lo);
+  else if (!in && held) list.erase(at);
+}
 
 }  // namespace
 
@@ -57,20 +66,12 @@ bool ActiveSet::settled_now(const State& s, BlockRange r) const {
   return true;
 }
 
-// From scratch: every run is new, every modal run projected, every event time computed.
+// The whole chain is one region with nothing classified before it (every block stuck in kind_,
+// no run, no mark): every run is new, every modal run projected, every event time computed.
 void ActiveSet::rebuild(const Chain& c, const State& s) {
+  if (work_.classifications > 0) throw std::logic_error("ActiveSet::rebuild: a new set only");
   ++work_.classifications;
-  for (const Run& r : runs_)
-    if (r.kind == kSettled) drop_old(r);
-  runs_.clear();
-  list_.live.clear();
-  list_.live_grooves.clear();
-  list_.settling = {};
-  find_runs(c, s, 0, N(), runs_);
-  std::fill(kind_.begin(), kind_.end(), kStuck);
-  modal_.clear();
-  clear_fresh();
-  for (Run& r : runs_) assign(c, s, r, classify(r, s, nullptr));
+  renew_region(c, s, nullptr, {0, N()});
   list_stepped(s);
   update_events(c, s, nullptr, true);
 }
@@ -147,7 +148,8 @@ ActiveSet::Kind ActiveSet::classify(const Run& r, const State& s, const std::uin
 void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
   r.kind = kind;
   std::fill(kind_.begin() + r.span.lo, kind_.begin() + r.span.hi, kind);
-  track(r);
+  keep_listed(list_.live, r.span.lo, kind == kStepped);
+  if (r.grooves) keep_listed(list_.live_grooves, r.span.lo, kind == kStepped);
   if (kind == kSettled) {
     if (store_.owner(r.span.lo) != RunStore::kSettled || store_.exact(r.span) == nullptr)
       store_.project(c, r.span, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kSettled, false);
@@ -156,39 +158,13 @@ void ActiveSet::assign(const Chain& c, const State& s, Run& r, Kind kind) {
   if (kind != kModal) return;
   modal_.add(c, s, r.span.lo, r.span.hi, r.grooves);
   if (r.grooves && modal_.settled_after(r.span.lo) < kInf) list_.settling.push({modal_.settled_after(r.span.lo), r.span.lo});
-  set_fresh(r.span);
+  std::fill(prev_.fresh.begin() + r.span.lo, prev_.fresh.begin() + r.span.hi, 1);
+  prev_.fresh_runs.push_back(r.span);
 }
 
 void ActiveSet::drop_old(const Run& r) {
   if (r.kind == kModal) modal_.drop(r.span.lo);
   else if (r.kind == kSettled && store_.owner(r.span.lo) == RunStore::kSettled) store_.drop(r.span.lo);
-}
-
-namespace {
-
-// lo in or out of the sorted list.
-void keep_listed(std::vector<int>& list, int lo, bool in) {
-  const auto at = std::lower_bound(list.begin(), list.end(), lo);
-  const bool held = at != list.end() && *at == lo;
-  if (in && !held) list.insert(at, lo);
-  else if (!in && held) list.erase(at);
-}
-
-void unlist(std::vector<int>& list, int lo, int hi) {
-  const auto first = std::lower_bound(list.begin(), list.end(), lo);
-  list.erase(first, std::lower_bound(first, list.end(), hi));
-}
-
-}  // namespace
-
-void ActiveSet::track(const Run& r) {
-  keep_listed(list_.live, r.span.lo, r.kind == kStepped);
-  if (r.grooves) keep_listed(list_.live_grooves, r.span.lo, r.kind == kStepped);
-}
-
-void ActiveSet::untrack(int lo, int hi) {
-  unlist(list_.live, lo, hi);
-  unlist(list_.live_grooves, lo, hi);
 }
 
 bool ActiveSet::settling(const std::pair<double, int>& e) const {
@@ -204,16 +180,6 @@ ActiveSet::Run& ActiveSet::seek(std::size_t& cursor, int lo) {
   const auto at = std::lower_bound(first, last, lo, [](const Run& r, int i) { return r.span.lo < i; });
   cursor = static_cast<std::size_t>(at - runs_.begin());
   return *at;
-}
-
-void ActiveSet::set_fresh(BlockRange r) {
-  std::fill(prev_.fresh.begin() + r.lo, prev_.fresh.begin() + r.hi, 1);
-  prev_.fresh_runs.push_back(r);
-}
-
-void ActiveSet::clear_fresh() {
-  for (const BlockRange& r : prev_.fresh_runs) std::fill(prev_.fresh.begin() + r.lo, prev_.fresh.begin() + r.hi, 0);
-  prev_.fresh_runs.clear();
 }
 
 void ActiveSet::list_stepped(const State& s) {

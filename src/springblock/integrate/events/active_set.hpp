@@ -54,7 +54,8 @@ class ActiveSet {
   ActiveSet(const Chain& c, RunStore& store, bool settle_grooves, double atol_u, double atol_v, int modal_max_run = 0,
             int modal_max_groove = 0, double t_end = std::numeric_limits<double>::infinity());
 
-  // Classify every run at s.t from scratch (the start of a run).
+  // Classify every run at s.t from scratch: the first classification of a new set (the start of
+  // a run).
   void rebuild(const Chain& c, const State& s);
   // After a switch at s.t (every settled and modal run the switch reads already materialised in
   // s): the classification brought up to date where it can have changed, the same as a
@@ -151,14 +152,11 @@ class ActiveSet {
   void find_runs(const Chain& c, const State& s, int lo, int hi, std::vector<Run>& out) const;
   // The kind of run r at s.t, given the previous classification in kind_ and modal_.
   Kind classify(const Run& r, const State& s, const std::uint8_t* touched);
-  // Set run r's kind in kind_ (its blocks); a run that becomes modal is registered, projected
-  // afresh at s.t (prev_.fresh), and a settled one gets its record on its path. The caller drops a
-  // modal run that stops being one (drop_old).
+  // Set run r's kind in kind_ (its blocks) and list_.live; a run that becomes modal is registered,
+  // projected afresh at s.t (prev_.fresh), and a settled one gets its record on its path. The
+  // caller drops a modal run that stops being one (drop_old).
   void assign(const Chain& c, const State& s, Run& r, Kind kind);
-  // Mark run r projected afresh at this classification; forget the marks of the previous one.
-  void set_fresh(BlockRange r);
-  void clear_fresh();
-  // update()'s steps (active_set_update.cpp).
+  // update()'s steps (active_set_update.cpp); rebuild() renews the whole chain as one region.
   void find_regions(const Chain& c, const State& s, const std::vector<int>& touched_list);
   void renew_region(const Chain& c, const State& s, const std::uint8_t* touched, BlockRange region);
   void retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched);
@@ -177,10 +175,7 @@ class ActiveSet {
   void renew_borders(const Chain& c, const State& s, BlockRange r);
   // Run r leaves the classification: its modal run or settled record is let go.
   void drop_old(const Run& r);
-  // list_.live after run r took its kind (assign), and with the runs in [lo, hi) gone.
-  // settling(e): entry e of list_.settling still names a modal grooves-only run.
-  void track(const Run& r);
-  void untrack(int lo, int hi);
+  // Entry e of list_.settling still names a modal grooves-only run.
   bool settling(const std::pair<double, int>& e) const;
   // The run starting at block lo (one of runs_), sought from a cursor (an index into runs_ at or
   // before it, moved to it) for increasing lo: O(1) when the runs sought lie close together, as
@@ -241,8 +236,7 @@ class ActiveSet {
     std::vector<int> done;            // materialise_near: modal and settled runs written (first blocks)
     std::vector<int> cand;            // blocks whose event time may have changed
     std::vector<int> switched;        // the switched blocks in block order
-    std::vector<BlockRange> regions;  // the stretches renewed, in block order
-    std::vector<BlockRange> retimed;  // runs outside them whose kind changed with time
+    std::vector<BlockRange> regions;  // the stretches renewed, and the runs retimed, in block order
     std::vector<Run> found;           // the runs found in one region
     std::vector<int> visit;           // a copy of list_.live to walk while assign() edits it
     std::vector<std::pair<double, int>> due;  // retime_grooves: settling entries taken off

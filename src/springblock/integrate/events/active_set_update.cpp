@@ -20,7 +20,8 @@ namespace sb::event_detail {
 void ActiveSet::update(const Chain& c, const State& s, const std::uint8_t* touched,
                        const std::vector<int>& touched_list) {
   ++work_.classifications;
-  clear_fresh();
+  for (const BlockRange& r : prev_.fresh_runs) std::fill(prev_.fresh.begin() + r.lo, prev_.fresh.begin() + r.hi, 0);
+  prev_.fresh_runs.clear();
   find_regions(c, s, touched_list);
   for (const BlockRange& region : work_.regions) renew_region(c, s, touched, region);
   retime_grooves(c, s, touched);
@@ -51,8 +52,8 @@ void ActiveSet::find_regions(const Chain& c, const State& s, const std::vector<i
   }
 }
 
-// The region's runs found afresh and classified by the same rules as rebuild() with the previous
-// classification in hand; the old runs in it leave (a modal one is dropped: none can be kept).
+// The region's runs found afresh and classified (classify(), with the previous classification in
+// hand, none for rebuild()); the old runs in it leave (a modal one is dropped: none can be kept).
 void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t* touched, BlockRange region) {
   auto by_start = [](const Run& r, int i) { return r.span.lo < i; };
   const auto first = std::lower_bound(runs_.begin(), runs_.end(), region.lo, by_start);
@@ -71,7 +72,10 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
     if (!kept) drop_old(*it);
   }
   std::fill(kind_.begin() + region.lo, kind_.begin() + region.hi, kStuck);
-  untrack(region.lo, region.hi);
+  for (std::vector<int>* list : {&list_.live, &list_.live_grooves}) {
+    const auto from = std::lower_bound(list->begin(), list->end(), region.lo);
+    list->erase(from, std::lower_bound(from, list->end(), region.hi));
+  }
   for (Run& r : work_.found) assign(c, s, r, r.kind);
   // The runs after the region move only when their number in it changed (a memmove of the rest
   // of the chain's runs per switch otherwise).
@@ -85,9 +89,9 @@ void ActiveSet::renew_region(const Chain& c, const State& s, const std::uint8_t*
 // A ringing one is stepped (list_.live_grooves). A modal one outside the regions has nothing in or beside
 // it switched and is the run modal_ holds, so classify() keeps it modal until s.t reaches its
 // settled_after: only those due (list_.settling) are visited. In block order, as a pass over
-// every run would visit them.
+// every run would visit them. A run that changes kind joins the regions where it lies (wholly
+// before region g), so they stay in block order.
 void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_t* touched) {
-  work_.retimed.clear();
   work_.visit.assign(list_.live_grooves.begin(), list_.live_grooves.end());
   work_.due.clear();
   while (!list_.settling.empty() && list_.settling.top().first <= s.t) {
@@ -107,7 +111,8 @@ void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_
     if (kind == r.kind) continue;
     drop_old(r);
     assign(c, s, r, kind);
-    work_.retimed.push_back(r.span);
+    work_.regions.insert(work_.regions.begin() + static_cast<std::ptrdiff_t>(g), r.span);
+    ++g;
   }
   // A due run still modal (in a renewed region, kept) is due again at the next switch.
   for (const auto& e : work_.due)
@@ -117,23 +122,15 @@ void ActiveSet::retime_grooves(const Chain& c, const State& s, const std::uint8_
 // Only blocks that switched, changed kind or were projected afresh, and their neighbours, can
 // have a new event time (the rules in update_events do nothing for any other block), so only
 // they are visited, in index order as rebuild's pass over every block would. They all lie in the
-// regions and the retimed runs (two lists in block order, disjoint).
+// regions (the retimed runs among them).
 void ActiveSet::collect_candidates(const State& s, const std::uint8_t* touched) {
   work_.cand.clear();
   int last = -1;
-  auto visit = [&](BlockRange r) {
+  for (const BlockRange& r : work_.regions)
     for (int i = r.lo; i < r.hi; ++i) {
       if (s.dir[i] == prev_.dir[i] && kind_[i] == prev_.kind[i] && !prev_.fresh[i] && !touched[i]) continue;
       for (int j = std::max(i - 1, last + 1); j <= std::min(i + 1, N() - 1); ++j) work_.cand.push_back(j), last = j;
     }
-  };
-  std::size_t a = 0, b = 0;
-  while (a < work_.regions.size() || b < work_.retimed.size()) {
-    if (b == work_.retimed.size() || (a < work_.regions.size() && work_.regions[a].lo < work_.retimed[b].lo))
-      visit(work_.regions[a++]);
-    else
-      visit(work_.retimed[b++]);
-  }
 }
 
 }  // namespace sb::event_detail

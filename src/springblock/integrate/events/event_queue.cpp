@@ -26,9 +26,8 @@ EventQueue::Node EventQueue::leaf(int i) const {
 EventQueue::EventQueue(int N) : t_(N, kInf), recheck_(N, 0), dirty_(N) {
   while (P_ < N) P_ *= 2;
   tree_.assign(2 * P_, Node{kEmpty, kEmpty});
-  for (int i = 0; i < N; ++i) tree_[P_ + i] = leaf(i);
-  for (int n = P_ - 1; n >= 1; --n)
-    tree_[n] = {std::min(tree_[2 * n].all, tree_[2 * n + 1].all), std::min(tree_[2 * n].real, tree_[2 * n + 1].real)};
+  for (int i = 0; i < N; ++i) dirty_.add(i);
+  refresh();
 }
 
 void EventQueue::set(int i, double t, bool recheck) {

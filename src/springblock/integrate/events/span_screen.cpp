@@ -47,26 +47,20 @@ bool hermite_positive(double g0, double d0, double g1, double d1, double h, doub
 SpanScreen::SpanScreen(const Chain& c)
     : v_(c.v_slider), eps_v_(kStopMargin * c.v_slider), N_(c.N) {}
 
-SpanScreen::Side SpanScreen::side_of(const SpanModes& spans, const ActiveSet& active, int j) const {
-  if (j < 0 || j >= N_) return kNone;
-  if (spans.holds(j)) return kSpan;
-  if (active.kind(j) == ActiveSet::kSettled) return kSettled;
-  return active.kind(j) == ActiveSet::kModal ? kModal : kFixed;
-}
-
-std::int64_t SpanScreen::record_of(const SpanModes& spans, Side side, int j) {
-  return side == kSettled || side == kModal ? spans.store().run(j).id : -1;
+SpanScreen::Border SpanScreen::border(const SpanModes& spans, const ActiveSet& active, int j) const {
+  if (j < 0 || j >= N_) return {kNone, -1};
+  if (spans.holds(j)) return {kSpan, -1};
+  if (active.kind(j) == ActiveSet::kSettled) return {kSettled, spans.store().run(j).id};
+  if (active.kind(j) == ActiveSet::kModal) return {kModal, spans.store().run(j).id};
+  return {kFixed, -1};
 }
 
 bool SpanScreen::current(const State& s, const SpanModes& spans, const ActiveSet& active, const Watch& w) const {
   for (const Fn& f : w.fns_) {
     if (s.dir[f.block] != f.dir) return false;
-    if (f.dir != 0) continue;
-    for (int side = 0; side < 2; ++side) {
-      const int j = side == 0 ? f.block - 1 : f.block + 1;
-      const Side now = side_of(spans, active, j);
-      if (now != f.side[side] || record_of(spans, now, j) != f.run[side]) return false;
-    }
+    if (f.dir == 0 && (f.border[0] != border(spans, active, f.block - 1) ||
+                       f.border[1] != border(spans, active, f.block + 1)))
+      return false;
   }
   return true;
 }
@@ -80,30 +74,24 @@ void SpanScreen::rebuild(const Chain& c, const State& s, const SpanModes& spans,
   // block order, so it is the last one listed).
   auto add_stuck = [&](int j) {
     if (j < 0 || j >= N || (!fns_.empty() && fns_.back().block == j)) return;
-    const Side left = side_of(spans, active, j - 1), right = side_of(spans, active, j + 1);
-    Fn f{j, 0, {left, right}, {}, {}, 0, 0, 0, {record_of(spans, left, j - 1), record_of(spans, right, j + 1)}};
+    Fn f{j, 0, {border(spans, active, j - 1), border(spans, active, j + 1)}, {}, {}, 0, 0, 0};
     for (int side = 0; side < 2; ++side) {
       const int nb = side == 0 ? j - 1 : j + 1;
-      if (f.side[side] == kNone) continue;
+      if (f.border[side].side == kNone) continue;
       const double k = c.spring_between(j, nb);
-      if (f.side[side] == kSpan) f.M2 += k * spans.row_bound(nb, 2), f.M4 += k * spans.row_bound(nb, 4);
-      if (f.side[side] == kModal) f.spread += k * active.modal_amplitude(nb);
+      if (f.border[side].side == kSpan) f.M2 += k * spans.row_bound(nb, 2), f.M4 += k * spans.row_bound(nb, 4);
+      if (f.border[side].side == kModal) f.spread += k * active.modal_amplitude(nb);
     }
-    f.start.g = cheap(c, s, spans, active, f, s.t, false);
     fns_.push_back(f);
   };
   for (int k = k0; k < k1; ++k) {
-    const BlockRange& r = spans.spans()[k];
+    const BlockRange& r = spans.span(k);
     add_stuck(r.lo - 1);
-    for (int i = r.lo; i < r.hi; ++i) {
-      if (s.dir[i] == 0) continue;
-      Fn f{i, s.dir[i], {kNone, kNone}, {}, {}, spans.row_bound(i, 3), spans.row_bound(i, 5), 0, {-1, -1}};
-      f.start.g = cheap(c, s, spans, active, f, s.t, false);
-      fns_.push_back(f);
-    }
+    for (int i = r.lo; i < r.hi; ++i)
+      if (s.dir[i] != 0) fns_.push_back({i, s.dir[i], {}, {}, {}, spans.row_bound(i, 3), spans.row_bound(i, 5), 0});
     add_stuck(r.hi);
   }
-  w.root_.resize(fns_.size());
+  for (Fn& f : fns_) f.start.g = cheap(c, s, spans, active, f, s.t, false);
 }
 
 double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans, const ActiveSet& active,
@@ -119,9 +107,9 @@ double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans,
   double F = k_s * (v_ * t - uj), dF = k_s * v_;
   for (int side = 0; side < 2; ++side) {
     const int nb = side == 0 ? j - 1 : j + 1;
-    if (f.side[side] == kNone) continue;
+    if (f.border[side].side == kNone) continue;
     const double k = c.spring_between(j, nb);
-    switch (f.side[side]) {
+    switch (f.border[side].side) {
       case kNone: break;  // skipped above: there is no block there, nor a spring
       case kSpan:
         F += k * ((fresh_at_start(nb) ? s.u[nb] : spans.u(nb, end)) - uj);
@@ -141,15 +129,12 @@ double SpanScreen::cheap(const Chain& c, const State& s, const SpanModes& spans,
 
 double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, Watch& w,
                           double t0, double h, double window) {
-  std::vector<Fn>& fns_ = w.fns_;
-  std::vector<double>& root_ = w.root_;
   double best = kInf;
   const double chord = 0.125 * h * h;
-  for (std::size_t k = 0; k < fns_.size(); ++k) {
-    Fn& f = fns_[k];
+  for (Fn& f : w.fns_) {
     f.end.g = cheap(c, s, spans, active, f, t0 + h, true);
     f.end.known = false;
-    root_[k] = kInf;
+    f.root = kInf;
     if (f.end.g > 0 && std::min(f.start.g, f.end.g) - f.M2 * chord > 0) continue;
     if (f.end.g > 0) {
       if (!f.start.known) f.start.d = cheap(c, s, spans, active, f, t0, false, true), f.start.known = true;
@@ -158,13 +143,13 @@ double SpanScreen::locate(const Chain& c, const State& s, const SpanModes& spans
     }
     // A root later than best + window h can neither be the event nor join it (the final best is
     // no later than this one): exact_root does not refine it.
-    root_[k] = exact_root(c, s, spans, active, f, t0, h, best + window * h);
-    best = std::min(best, root_[k]);
+    f.root = exact_root(c, s, spans, active, f, t0, h, best + window * h);
+    best = std::min(best, f.root);
   }
   w.hits_.clear();
   if (best <= h)
-    for (std::size_t k = 0; k < fns_.size(); ++k)
-      if (root_[k] <= best + window * h) w.hits_.push_back(fns_[k].block);
+    for (const Fn& f : w.fns_)
+      if (f.root <= best + window * h) w.hits_.push_back(f.block);
   return best;
 }
 
@@ -190,9 +175,9 @@ double SpanScreen::exact_root(const Chain& c, const State& s, const SpanModes& s
   F[1] = c.k_s(j) * v_;
   for (int side = 0; side < 2; ++side) {
     const int nb = side == 0 ? j - 1 : j + 1;
-    if (f.side[side] == kNone) continue;
+    if (f.border[side].side == kNone) continue;
     const double kj = c.spring_between(j, nb);
-    switch (f.side[side]) {
+    switch (f.border[side].side) {
       case kNone: continue;  // skipped above
       case kFixed: F[0] += kj * (s.u[nb] - uj); continue;
       case kSettled:

@@ -35,6 +35,13 @@ namespace sb::event_detail {
 class SpanScreen {
   static constexpr int D = SpanModes::kDegree;
   enum Side : std::uint8_t { kNone, kSpan, kSettled, kModal, kFixed };
+  // What a neighbour of a stuck block is to the screen, and the store's record holding a settled
+  // or modal one (-1: none).
+  struct Border {
+    Side side = kNone;
+    std::int64_t run = -1;
+    bool operator==(const Border&) const = default;
+  };
   struct Value {
     double g = 0, d = 0;  // g, and its slope where known
     bool known = false;   // d is known
@@ -42,11 +49,11 @@ class SpanScreen {
   struct Fn {
     int block;
     std::int8_t dir;  // a sliding block's direction; 0 for a stuck block's threshold
-    Side side[2];     // a stuck block's neighbours (left, right)
+    Border border[2];  // a stuck block's neighbours (left, right)
     Value start, end;  // g (or its cheap lower bound) at the step's start and end, and its slope
     double M2, M4;    // bounds on |g''| and |g''''| (of the part that is not a modal bound)
     double spread;    // the spring to a modal neighbour times its bound (0 without one)
-    std::int64_t run[2];  // the store's record holding a settled or modal neighbour (-1: none)
+    double root = 0;  // its first root in the step last located (+inf if none)
   };
 
  public:
@@ -60,7 +67,6 @@ class SpanScreen {
    private:
     friend class SpanScreen;
     std::vector<Fn> fns_;
-    std::vector<double> root_;
     std::vector<int> hits_;
   };
 
@@ -87,9 +93,7 @@ class SpanScreen {
   double exact_root(const Chain& c, const State& s, const SpanModes& spans, ActiveSet& active, const Fn& f,
                     double t0, double h, double after);
   double poly_root(const double* g, double t0, double h, double after) const;
-  // What a neighbour j of a stuck block is to the screen, and the record holding it.
-  Side side_of(const SpanModes& spans, const ActiveSet& active, int j) const;
-  static std::int64_t record_of(const SpanModes& spans, Side side, int j);
+  Border border(const SpanModes& spans, const ActiveSet& active, int j) const;
 
   double v_, eps_v_;
   int N_;

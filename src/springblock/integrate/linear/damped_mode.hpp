@@ -144,11 +144,10 @@ struct DampedMode {
       eS = sin_wt * (e * inv_w);
     } else {
       // Overdamped: the two real exponentials taken separately so that neither overflows;
-      // the slow rate kappa - alpha is written as -omega^2 / (alpha + kappa) (no cancellation).
-      const double k = w;
-      const double slow = std::exp(-omega2 / (alpha + k) * tau), fast = std::exp(-(alpha + k) * tau);
+      // the slow rate w - alpha is written as -omega^2 / (alpha + w) (no cancellation).
+      const double slow = std::exp(-omega2 / (alpha + w) * tau), fast = std::exp(-(alpha + w) * tau);
       eC = 0.5 * (slow + fast);
-      eS = 0.5 * (slow - fast) / k;
+      eS = 0.5 * (slow - fast) / w;
     }
     const double P = p0 + alpha * q0;
     q = q0 * eC + P * eS;

@@ -50,8 +50,7 @@ void EdgeMarch::finish(double H) {
 }
 
 double EdgeMarch::affine_reach(double a, double b, double fs) const {
-  if (gap_.sense == Sense::Abs) return affine_crossing(a, b, fs);
-  return b > 0 ? std::max((fs - a) / b, 0.0) : kInf;
+  return gap_.sense == Sense::Abs || b > 0 ? affine_crossing(a, b, fs) : kInf;
 }
 
 void EdgeMarch::finish() {
@@ -106,14 +105,11 @@ SB_KERNEL_CLONES double step_and_weigh(int n, const double* __restrict p00, cons
 
 }  // namespace
 
-double EdgeMarch::grid_step() {
-  return step_and_weigh(static_cast<int>(sum_.modes.size()), sum_.p00.data(), sum_.p01.data(), sum_.p10.data(),
-                        sum_.p11.data(), now_.q.data(), now_.p.data(), next_.q.data(), next_.p.data(),
-                        sum_.w.data());
-}
-
 double EdgeMarch::advance(const double* q0, const double* p0, double t1, int& since_sync) {
-  if (++since_sync < kResync) return grid_step();
+  if (++since_sync < kResync)
+    return step_and_weigh(static_cast<int>(sum_.modes.size()), sum_.p00.data(), sum_.p01.data(), sum_.p10.data(),
+                          sum_.p11.data(), now_.q.data(), now_.p.data(), next_.q.data(), next_.p.data(),
+                          sum_.w.data());
   direct(q0, p0, t1, next_.q.data(), next_.p.data());
   since_sync = 0;
   return weighted(next_.q.data());
@@ -142,12 +138,12 @@ SB_KERNEL_CLONES void mode_energies(int n, const double* __restrict w, const dou
 
 }  // namespace
 
-EdgeMarch::Bounds EdgeMarch::bounds(const double* q, const double* qd) {
+EdgeMarch::Bounds EdgeMarch::bounds() {
   // Energy bounds |qd| <= E, |q| <= E / omega, |q''| = |gamma qd + omega^2 q| <= (gamma + omega) E.
   const int n = static_cast<int>(sum_.modes.size());
   double* E = scratch_.q.data();
   double* E_over_omega = scratch_.p.data();
-  mode_energies(n, sum_.w.data(), sum_.omega.data(), q, qd, E, E_over_omega);
+  mode_energies(n, sum_.w.data(), sum_.omega.data(), now_.q.data(), now_.p.data(), E, E_over_omega);
   double sb = std::fabs(gap_.b), mb = 0.0, m2 = 0.0;
   for (int k = 0; k < n; ++k) {
     sb += E[k];
@@ -167,49 +163,45 @@ double EdgeMarch::force(const double* q0, const double* p0, double tau) {
   return force_at(tau, scratch_.q.data());
 }
 
-bool EdgeMarch::graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi,
-                      double Fhi, double m2, int depth, double& where) {
+double EdgeMarch::graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi,
+                        double Fhi, double m2, int depth) {
   const double h = hi - lo;
-  if (std::max(measure(Flo), measure(Fhi)) + 0.125 * m2 * h * h < fs) return false;
-  if (depth >= kMaxDepth || budget_-- <= 0) return false;  // below resolution (see header)
+  if (std::max(measure(Flo), measure(Fhi)) + 0.125 * m2 * h * h < fs) return kInf;
+  if (depth >= kMaxDepth || budget_-- <= 0) return kInf;  // below resolution (see header)
   const double mid = 0.5 * (lo + hi), Fm = force(q0, p0, mid);
-  if (measure(Fm) >= fs) {
-    where = mid;
-    return true;
-  }
-  return graze(q0, p0, fs, lo, Flo, mid, Fm, m2, depth + 1, where) ||
-         graze(q0, p0, fs, mid, Fm, hi, Fhi, m2, depth + 1, where);
+  if (measure(Fm) >= fs) return mid;
+  const double left = graze(q0, p0, fs, lo, Flo, mid, Fm, m2, depth + 1);
+  return left != kInf ? left : graze(q0, p0, fs, mid, Fm, hi, Fhi, m2, depth + 1);
 }
 
 double EdgeMarch::lower_bound(const double* q0, const double* p0, double fs) {
   direct(q0, p0, 0.0);
-  const Bounds B = bounds(now_.q.data(), now_.p.data());
+  const Bounds B = bounds();
   const double g = fs - measure(force_at(0.0, now_.q.data()));
   if (g <= 0 || gap_.open) return 0.0;
-  return std::max(B.sb > 0 ? g / B.sb : kInf, envelope_skip(gap_.a, B.mb, fs));
+  return safe_skip(g, B, gap_.a, fs);
 }
 
-double EdgeMarch::envelope_skip(double aff, double mb, double fs) const {
-  // No crossing while the affine part stays within the modal bound mb of the threshold.
-  const double room = fs - mb;
-  const bool inside = gap_.sense == Sense::Abs ? (mb < fs && std::fabs(aff) <= room) : aff <= room;
-  return inside ? affine_reach(aff, gap_.b, room) : 0.0;
+double EdgeMarch::safe_skip(double g, const Bounds& B, double aff, double fs) const {
+  const double room = fs - B.mb;
+  const bool inside = gap_.sense == Sense::Abs ? (B.mb < fs && std::fabs(aff) <= room) : aff <= room;
+  return std::max(B.sb > 0 ? g / B.sb : kInf, inside ? affine_reach(aff, gap_.b, room) : 0.0);
 }
 
 double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, double tau_limit, double t0) {
   double tau = 0;
   direct(q0, p0, 0.0);
   double F = force_at(0.0, now_.q.data());
-  Bounds B = bounds(now_.q.data(), now_.p.data());
+  Bounds B = bounds();
   int since_sync = 0, since_bounds = 0;
   poly_.on = false;
   bool open = gap_.open;  // tau = 0 sits on the threshold and is not an event (see header)
   hit_limit = false;
   for (;;) {
-    if (since_bounds >= kBounds) B = bounds(now_.q.data(), now_.p.data()), since_bounds = 0;
+    if (since_bounds >= kBounds) B = bounds(), since_bounds = 0;
     const double g = fs - measure(F);
     if (!open) {
-      if (g <= 0) return tau;  // only at tau = 0: later crossings are bracketed below
+      if (g <= 0) return tau;  // at tau = 0 or a safe skip's end (at most on the threshold), else bracketed
       if (B.mb <= 1e-16 * std::max(std::fabs(fs), std::fabs(F))) {
         // The modes have died out below round-off: the signal is affine from here on.
         const double t = tau + affine_reach(F, gap_.b, fs);
@@ -221,21 +213,17 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
       hit_limit = true;
       return kInf;
     }
-    // No crossing before |F| has changed by g at a rate of at most sb, nor before the affine
-    // part alone comes within the modal bound mb of the threshold.
-    const double skip = open ? 0.0 : std::max(B.sb > 0 ? g / B.sb : kInf, envelope_skip(gap_.a + gap_.b * tau, B.mb, fs));
+    const double skip = open ? 0.0 : safe_skip(g, B, affine_at(tau), fs);
     if (skip >= kJump * H_) {
-      const double next = tau + skip;
-      if (next > tau_limit) {
-        hit_limit = std::isfinite(next);
+      tau += skip;
+      if (tau > tau_limit) {
+        hit_limit = std::isfinite(tau);
         return kInf;
       }
-      direct(q0, p0, next);
-      F = force_at(next, now_.q.data());
-      B = bounds(now_.q.data(), now_.p.data());
+      direct(q0, p0, tau);
+      F = force_at(tau, now_.q.data());
+      B = bounds();
       since_sync = since_bounds = 0;
-      if (measure(F) >= fs) return next;  // a safe skip ends at most on the threshold
-      tau = next;
       continue;
     }
     const double t1 = tau + H_;
@@ -246,18 +234,15 @@ double EdgeMarch::first_crossing(const double* q0, const double* p0, double fs, 
       return refine(q0, p0, fs, t0, tau, open ? fs : fs - measure(F), t1, fs - measure(F1));
     }
     if (!open) {
-      // |F''| <= m2 on [tau, t1] from the bounds at tau (or earlier); retaken at tau when stale.
+      // |F''| <= B.m2 on [tau, t1] from the bounds at tau (or earlier); retaken at tau when stale.
       const double peak = std::max(measure(F), measure(F1));
-      double m2 = B.m2;
-      if (peak + 0.125 * m2 * H_ * H_ >= fs && since_bounds > 0) {
-        B = bounds(now_.q.data(), now_.p.data()), since_bounds = 0;
-        m2 = B.m2;
-      }
-      if (peak + 0.125 * m2 * H_ * H_ >= fs) {
+      const auto may_touch = [&] { return peak + 0.125 * B.m2 * H_ * H_ >= fs; };
+      if (may_touch() && since_bounds > 0) B = bounds(), since_bounds = 0;
+      if (may_touch()) {
         expand(q0, p0, tau);
         budget_ = kGrazeBudget;
-        double where = 0;
-        if (graze(q0, p0, fs, tau, F, t1, F1, m2, 0, where))
+        const double where = graze(q0, p0, fs, tau, F, t1, F1, B.m2, 0);
+        if (where != kInf)
           return refine(q0, p0, fs, t0, tau, fs - measure(F), where, fs - measure(force(q0, p0, where)));
         poly_.on = false;
       }

@@ -26,12 +26,11 @@
 //    recurrence q^(j+2) = -gamma q^(j+1) - omega^2 q^(j), and with every mode's fastest rate r
 //    satisfying r H <= kTaylorReach (0.52; the grid step gives 0.5) the remainder of order
 //    kTaylor = 14 is below (r H)^(kTaylor+1) / (kTaylor+1)! = 4e-17 of the modal amplitude,
-//    under round-off. An evaluation then costs kTaylor flops
-//    instead of an exp and a sincos per mode. The polynomial's round-off differs from the direct
-//    evaluation's, so its root is confirmed by one direct evaluation: the returned point is
-//    crossed by the closed form itself (and the refinement goes on by direct evaluations in
-//    the rare case it is not). Modes faster than that (strong overdamping) keep the direct
-//    evaluations throughout.
+//    under round-off. An evaluation then costs kTaylor flops instead of an exp and a sincos per
+//    mode. The polynomial's round-off differs from the direct evaluation's, so its root is
+//    confirmed by one direct evaluation: the returned point is crossed by the closed form itself
+//    (and the refinement goes on by direct evaluations in the rare case it is not). Modes faster
+//    than that (strong overdamping) keep the direct evaluations throughout.
 // Every mode's energy qd^2 + omega^2 q^2 never grows (damping only removes it), so the bounds
 // taken at one point hold for all later times. They cost a sqrt per mode, so the march takes
 // them afresh only every kBounds grid steps (and at every direct evaluation) and otherwise uses
@@ -83,10 +82,9 @@ class EdgeMarch {
   bool hit_limit = false;
 
  private:
-  // Order of the local polynomial and the largest r H it is used at (see the header): the grid
-  // turns the fastest mode by kGrid = 0.5 rad, and 0.52^15 / 15! = 4e-17 is below round-off.
-  // Order 20 up to r H = 1 (2e-20) would add six terms to every evaluation for nothing a double
-  // holds (paper/choices.md).
+  // Order of the local polynomial and the largest r H it is used at (see the header). Order 20
+  // up to r H = 1 (2e-20) would add six terms to every evaluation for nothing a double holds
+  // (paper/choices.md).
   static constexpr int kTaylor = 14;
   static constexpr double kTaylorReach = 0.52;
   struct Mode {
@@ -99,15 +97,14 @@ class EdgeMarch {
   // The modes at tau into q, qd (one exp and sincos per mode).
   void direct(const double* q0, const double* p0, double tau, double* q, double* qd);
   void direct(const double* q0, const double* p0, double tau) { direct(q0, p0, tau, now_.q.data(), now_.p.data()); }
-  double grid_step();                                            // next_ = now_ advanced by H; weighted(next_.q)
-  // next_ = the modes at t1, one grid step on from now_: by the grid step, or every kResync-th
+  // next_ = the modes at t1, one grid step on from now_: by their transitions, or every kResync-th
   // step by the closed form, so the recurrence's round-off never accumulates; weighted(next_.q).
   double advance(const double* q0, const double* p0, double t1, int& since_sync);
   double force_at(double tau, const double* q) const;            // a + b tau + sum w q
   double affine_at(double tau) const { return gap_.a + gap_.b * tau; }
   double weighted(const double* x) const;                        // sum w x (the order of every such sum)
-  // From the modes' energies at (q, qd), which must not be scratch_: its per-mode terms go there.
-  Bounds bounds(const double* q, const double* qd);
+  // From the modes' energies at the march's point (now_); the per-mode terms go to scratch_.
+  Bounds bounds();
   double force(const double* q0, const double* p0, double tau);  // F only, direct (scratch state)
   // The gap fs - measure(F) at tau and its slope, from one direct evaluation (dF is the modes'
   // velocities summed: no extra exp or sincos).
@@ -115,19 +112,18 @@ class EdgeMarch {
   double measure(double F) const { return gap_.sense == Sense::Abs ? (F < 0 ? -F : F) : F; }
   // First tau >= 0 at which the affine part a + b tau reaches the threshold (inf if never).
   double affine_reach(double a, double b, double fs) const;
-  // A skip that provably passes no crossing: the time until the affine part at tau (aff) comes
-  // within the modal bound mb of the threshold (0 if it already is).
-  double envelope_skip(double aff, double mb, double fs) const;
+  // A skip from a point with gap g, bounds B and affine part aff that provably passes no crossing:
+  // none before |F| has changed by g at a rate of at most sb, nor before the affine part alone
+  // comes within the modal bound mb of the threshold (0 if it already is).
+  double safe_skip(double g, const Bounds& B, double aff, double fs) const;
   // Bracket refinement of first_crossing: the crossed end of [lo, hi] to round-off in t
   // (safeguarded Newton, Illinois regula falsi and bisection as fallbacks).
   double refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                 double ghi);
-  // The iteration of refine; x, gx, dgx: an evaluation inside the bracket to start Newton from
-  // (x = +inf: none).
-  double shrink(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
-                double ghi, double x, double gx, double dgx);
-  bool graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi, double Fhi,
-             double m2, int depth, double& where);
+  // A point of [lo, hi] with measure(F) >= fs, subdividing while |F''| <= m2 allows a touch (see
+  // the header); +inf if there is none to resolution.
+  double graze(const double* q0, const double* p0, double fs, double lo, double Flo, double hi, double Fhi,
+               double m2, int depth);
   // The Taylor polynomial of F about tau_base (poly_.on), if the modes allow it (poly_.ok),
   // from one direct evaluation there: the march's own modes carry the grid recurrence's
   // round-off, up to ~1e-13 of them, far above what a root to round-off needs.

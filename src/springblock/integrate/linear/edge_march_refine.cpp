@@ -50,20 +50,19 @@ void EdgeMarch::gap(const double* q0, const double* p0, double fs, double tau, d
 // The bracket's gap g = fs - measure(F) is > 0 at lo and <= 0 at hi.
 double EdgeMarch::refine(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
                          double ghi) {
-  const double x = shrink(q0, p0, fs, t0, lo, glo, hi, ghi, kInf, 0, 0);
+  // [from, hi] shrunk; x, gx, dgx: an evaluation inside it to start Newton from (x = +inf: none).
+  auto shrink = [&](double from, double gfrom, double x, double gx, double dgx) {
+    return first_root_newton([&](double at, double& g, double& dg) { gap(q0, p0, fs, at, g, dg); }, from, gfrom, hi,
+                             ghi, [&](double end) { return time_round_off(t0 + end); }, x, gx, dgx);
+  };
+  const double x = shrink(lo, glo, kInf, 0, 0);
   if (!poly_.on) return x;
   // The polynomial's root, confirmed by the closed form (see the header).
   poly_.on = false;
   double gx, dgx;
   gap(q0, p0, fs, x, gx, dgx);
   if (gx <= 0) return x;
-  return shrink(q0, p0, fs, t0, x, gx, hi, ghi, x, gx, dgx);
-}
-
-double EdgeMarch::shrink(const double* q0, const double* p0, double fs, double t0, double lo, double glo, double hi,
-                         double ghi, double x, double gx, double dgx) {
-  return first_root_newton([&](double at, double& g, double& dg) { gap(q0, p0, fs, at, g, dg); }, lo, glo, hi, ghi,
-                           [&](double end) { return time_round_off(t0 + end); }, x, gx, dgx);
+  return shrink(x, gx, x, gx, dgx);
 }
 
 }  // namespace sb::event_detail

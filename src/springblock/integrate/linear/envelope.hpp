@@ -25,12 +25,11 @@ struct Scales {
 
 struct TransientEnvelope {
   double u = 0, v = 0;  // bounds on every row's |u - path| and |v - drift| at tau = 0
-  double alpha = 0;     // decay rate of both
-  bool decays = false;  // false: no bound (the transient is kept for ever)
+  double alpha = 0;     // decay rate of both (0: no bound, the transient is kept for ever)
 
   // The time after which the bounds are below eps_u and eps_v (infinity without a bound).
   double time_below(double eps_u, double eps_v) const {
-    if (!decays || !(eps_u > 0) || !(eps_v > 0)) return std::numeric_limits<double>::infinity();
+    if (!(alpha > 0) || !(eps_u > 0) || !(eps_v > 0)) return std::numeric_limits<double>::infinity();
     return std::max({0.0, std::log(u / eps_u) / alpha, std::log(v / eps_v) / alpha});
   }
 };
@@ -41,16 +40,14 @@ inline TransientEnvelope transient_envelope(const RunShape& b, const double* q0,
   for (int k = 0; k < b.n; ++k) {
     const DampedMode& m = b.modes[k];
     if (!(m.alpha > 0) || !(m.s > 0)) return TransientEnvelope{};
-    const double w = m.w, P = p0[k] + m.alpha * q0[k];
     // sqrt of the sum of squares, not hypot (several times dearer): displacements in m and
     // velocities over rates are far from the squares' overflow and underflow.
-    const double Pw = P / w;
+    const double P = p0[k] + m.alpha * q0[k], Pw = P / m.w;
     const double C = std::sqrt(q0[k] * q0[k] + Pw * Pw);
     e.u += C;
     e.v += C * m.omega;
     e.alpha = m.alpha;
   }
-  e.decays = b.n > 0;
   return e;
 }
 

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "springblock/integrate/numerics/round_off.hpp"
-
 namespace sb::event_detail {
 namespace {
 
@@ -17,8 +15,7 @@ constexpr int kSampleResync = 64;
 }  // namespace
 
 ModalRuns::ModalRuns(const Chain& c, RunStore& store)
-    : eps_v_(kStopMargin * c.v_slider),
-      store_(store),
+    : store_(store),
       run_of_(c.N, -1),
       cursor_(c.N),
       scratch_(c.N),
@@ -28,7 +25,7 @@ void ModalRuns::add(const Chain& c, const State& s, int lo, int hi, bool grooves
   const RunStore::Run& rec =
       store_.project(c, {lo, hi}, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kModal);
   const Ends ends{rec.shape, {store_.A(lo), store_.A(hi - 1)}, {store_.B(lo), store_.B(hi - 1)}};
-  Run run{lo, hi, ends, s.t, 0, false, grooves};
+  Run run{lo, hi, ends, grooves};
   if (grooves) run.settled_after = s.t + store_.envelope(rec).time_below(settle_.u, settle_.v);
   for (int i = lo; i < hi; ++i) run_of_[i] = static_cast<int>(runs_.size());
   runs_.push_back(run);
@@ -47,15 +44,16 @@ void ModalRuns::drop(int lo) {
   runs_.pop_back();
 }
 
-void ModalRuns::scratch_at(Run& r, double t) {
-  if (r.scratch_t == t) return;
+const ModalRuns::Run& ModalRuns::scratch_at(int i, double t) {
+  Run& r = runs_[run_of_[i]];
+  if (r.scratch_t == t) return r;
   store_.coords(record(r), t, scratch_.q.data(), scratch_.p.data());
   r.scratch_t = t;
+  return r;
 }
 
 void ModalRuns::row_taylor(int i, double t, int deg, double* c) {
-  Run& r = runs_[run_of_[i]];
-  scratch_at(r, t);
+  scratch_at(i, t);
   store_.taylor(i, t, scratch_.q.data(), scratch_.p.data(), deg, c);
 }
 
@@ -64,7 +62,7 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, Rows
   for (Run& r : runs_) {
     const double* q = cursor_.q.data();
     const double* qd = cursor_.p.data();
-    const bool step = at_sample && r.cursor && sample_dt > 0 &&
+    const bool step = at_sample && sample_dt > 0 &&
                       std::fabs((t - r.tc) - sample_dt) <= 1e-9 * sample_dt && r.since + 1 < kSampleResync;
     if (step) {
       r.ends.shape->step_sample(cursor_.q.data() + r.lo, cursor_.p.data() + r.lo);
@@ -73,10 +71,10 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, Rows
       store_.coords(record(r), t, cursor_.q.data(), cursor_.p.data());
       r.since = 0;
     } else {
-      scratch_at(r, t);  // off-sample evaluations must not move the cursor
+      scratch_at(r.lo, t);  // off-sample evaluations must not move the cursor
       q = scratch_.q.data(), qd = scratch_.p.data();
     }
-    if (at_sample) r.tc = t, r.cursor = true;
+    if (at_sample) r.tc = t;
     if (rows == Rows::kEnds) {
       // The copy in r.ends holds while the run keeps the record it was projected into.
       assert(r.ends.shape == record(r).shape && r.ends.A[1] == store_.A(r.hi - 1) && r.ends.B[0] == store_.B(r.lo));
@@ -91,8 +89,7 @@ void ModalRuns::materialise(double t, double* u, double* v, bool at_sample, Rows
 }
 
 void ModalRuns::materialise_run(int i, double t, double* u, double* v) {
-  Run& r = runs_[run_of_[i]];
-  scratch_at(r, t);
+  const Run& r = scratch_at(i, t);
   store_.write(record(r), t, scratch_.q.data(), scratch_.p.data(), u, v);
 }
 

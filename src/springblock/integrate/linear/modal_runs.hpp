@@ -5,9 +5,7 @@
 // or chain ends) is a linear system with constant forcing, f_kin in run_shape.hpp's equation the
 // signed kinetic friction of its sliding blocks: an affine path plus damped modes in closed form,
 // so the run needs no time step at all. Its events are found by EdgeMarch:
-//   * a sliding block stops when dir v falls below -eps_v (eps_v = 1e-12 v_s, the round-off
-//     margin the per-block solver uses too: a creeping block whose velocity only touches zero
-//     is not stopped and restarted at every touch);
+//   * a sliding block stops when dir v falls below -kStopMargin v_s (round_off.hpp);
 //   * a stuck block beside the run (and beside no stepped run) starts to slide when |F| reaches
 //     f_static; F is affine plus the modes of the one or two runs it borders.
 // For a run of n blocks a switch costs O(n^2) (projection) plus the event searches, against a
@@ -40,10 +38,6 @@ class ModalRuns {
   void add(const Chain& c, const State& s, int lo, int hi, bool grooves);
   // The run starting at block lo is no longer modal (its record leaves the store).
   void drop(int lo);
-  // No run is modal.
-  void clear() {
-    while (!runs_.empty()) drop(runs_.back().lo);
-  }
   // Transients below these (in u and v, every row) count as gone: see settled_after().
   void set_settle_scales(double eps_u, double eps_v) { settle_ = {eps_u, eps_v}; }
   // For the run holding block i: a time after which its deviation from the affine path is
@@ -104,20 +98,18 @@ class ModalRuns {
   struct Run {
     int lo, hi;
     Ends ends;
-    double tc;        // time of the sample cursor
-    int since = 0;    // recurrence steps since the cursor was last set from the closed form
-    bool cursor = false;
     bool grooves = false;  // no contact block in it
+    double tc = std::numeric_limits<double>::quiet_NaN();  // time of the sample cursor (NaN: none yet)
+    int since = 0;  // recurrence steps since the cursor was last set from the closed form
     double settled_after = std::numeric_limits<double>::infinity();
     double scratch_t = std::numeric_limits<double>::quiet_NaN();  // time of its scratch coordinates (scratch_at)
   };
-  // The run's modal coordinates at t into the scratch slots [r.lo, r.hi), computed once
-  // per t: a switch searches a run's stops and both its stuck neighbours' crossings from the
-  // same s.t.
-  void scratch_at(Run& r, double t);
+  // The modal coordinates at t of the run r holding block i into the scratch slots [r.lo, r.hi),
+  // computed once per t (a switch searches a run's stops and both its stuck neighbours' crossings
+  // from the same s.t); returns r.
+  const Run& scratch_at(int i, double t);
   const RunStore::Run& record(const Run& r) const { return store_.run(r.lo); }
 
-  double eps_v_;
   Scales settle_;  // set_settle_scales
   RunStore& store_;
   std::vector<Run> runs_;

@@ -4,18 +4,18 @@
 
 #include "springblock/infinity.hpp"
 #include "springblock/integrate/linear/modal_runs.hpp"
+#include "springblock/integrate/numerics/round_off.hpp"
 
 namespace sb::event_detail {
 
 ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, bool fresh, double t_limit) {
-  Run& r = runs_[run_of_[i]];
+  // The velocity v = B + sum Q q_k' and each q_k' is a damped mode started from (q', q'') at
+  // s.t. Event: -dir (v - B) >= dir B + eps_v, i.e. dir v <= -eps_v (eps_v = kStopMargin v_s).
+  const Run& r = scratch_at(i, s.t);
   const RunShape& sh = *record(r).shape;
   const int n = r.hi - r.lo;
   const double* row = sh.row(i - r.lo);
   const double dir = s.dir[i];
-  // The velocity v = B + sum Q q_k' and each q_k' is a damped mode started from (q', q'') at
-  // s.t. Event: -dir (v - B) >= dir B + eps_v, i.e. dir v <= -eps_v.
-  scratch_at(r, s.t);
   march_.reset();
   for (int k = 0; k < n; ++k) {
     const int slot = r.lo + k;
@@ -24,12 +24,12 @@ ModalRuns::Found ModalRuns::stop_time(const Chain& c, const State& s, int i, boo
     velocity_.p[slot] = -c.gamma * scratch_.p[slot] - m.omega2 * scratch_.q[slot];
     march_.add_mode(-dir * row[k], m, slot, sh.steps.march[k].data());
   }
-  const double v = store_.row_v(i, scratch_.p.data());
   march_.finish(store_.shapes().march_step());
   march_.set_affine(0.0, 0.0);
   // A block that has just started to slide sits at v = 0 exactly (see EdgeMarch's open origin).
-  march_.set_sense(EdgeMarch::Sense::Upper, fresh ? dir * s.v[i] <= 0.0 : dir * v <= 0.0);
-  const double tau = march_.first_crossing(velocity_.q.data(), velocity_.p.data(), dir * store_.B(i) + eps_v_, t_limit - s.t, s.t);
+  march_.set_sense(EdgeMarch::Sense::Upper, dir * (fresh ? s.v[i] : store_.row_v(i, scratch_.p.data())) <= 0.0);
+  const double tau = march_.first_crossing(velocity_.q.data(), velocity_.p.data(),
+                                           dir * store_.B(i) + kStopMargin * c.v_slider, t_limit - s.t, s.t);
   return {s.t + tau, march_.hit_limit, t_limit};
 }
 
@@ -63,12 +63,12 @@ ModalRuns::Found ModalRuns::crossing_time(const Chain& c, const State& s, int j,
     const int nb = side == 0 ? j - 1 : j + 1;
     if (nb < 0 || nb >= static_cast<int>(run_of_.size()) || run_of_[nb] < 0) continue;
     const double k_nb = c.spring_between(j, nb);
-    Run& r = runs_[run_of_[nb]];
+    // The run's coordinates at s.t (its own origin may be older: it was kept across switches).
+    const Run& r = scratch_at(nb, s.t);
     const RunShape& sh = *record(r).shape;
     const double* row = sh.row(nb - r.lo);
-    // The run's coordinates at s.t (its own origin may be older: it was kept across switches).
-    scratch_at(r, s.t);
-    for (int k = 0; k < r.hi - r.lo; ++k) march_.add_mode(k_nb * row[k], sh.modes[k], r.lo + k, sh.steps.march[k].data());
+    for (int k = 0; k < r.hi - r.lo; ++k)
+      march_.add_mode(k_nb * row[k], sh.modes[k], r.lo + k, sh.steps.march[k].data());
   }
   march_.finish(store_.shapes().march_step());
   march_.set_affine(a, b);

@@ -33,22 +33,20 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
       if (!(c.K_int > 0) || nb < 0 || nb >= N || c.contact[nb]) continue;
       const int g = seg_of[nb];
       const GrooveRun& s = segs_[g];
-      const int n = e.nseg++;
-      e.seg[n] = g, e.row[n] = nb - s.first;
+      const int n = f.n++;
       f.k[n] = c.spring_between(j, nb);
-      f.term[n] = 2 * g + (e.row[n] == 0 ? 0 : 1);
-      const double* row = s.shape->row(e.row[n]);
+      f.term[n] = 2 * g + (nb == s.first ? 0 : 1);
+      const double* row = s.shape->row(nb - s.first);
       for (int k = 0; k < s.n; ++k) e.march.add_mode(f.k[n] * row[k], s.shape->modes[k], s.first + k);
     }
     // A block beside no groove has the slider's slope, shared by all such blocks on a chain
     // whose slider springs are equal (CommonSlopeSum sums them at once); where they differ it is
     // an edge without ringing.
-    if (e.nseg == 0 && c.uniform()) {
+    if (f.n == 0 && c.uniform()) {
       interior_.blocks.push_back(j);
       continue;
     }
-    f.n = e.nseg;
-    if (e.nseg) e.march.finish();
+    if (f.n) e.march.finish();
     edges_.forces.push_back(f);
     edges_.list.push_back(std::move(e));
   }
@@ -56,44 +54,30 @@ QuietPhase::QuietPhase(const Chain& c, RunStore& store)
   edges_.order.reserve(edges_.list.size());
 }
 
-void QuietPhase::take_record(const Chain& c, const GrooveRun& s, const double* u, const double* v) {
-  const BlockRange r{s.first, s.first + s.n};
-  const RunStore::Run* held = store_.exact(r);
-  if (held != nullptr && (held->owner == RunStore::kSettled || held->owner == RunStore::kModal)) {
-    store_.rebase(s.first, span_.t0);
-    return;
-  }
-  store_.project(c, r, span_.t0, u, v, nullptr, RunStore::kQuiet);
-}
-
 // Underdamped modes shrink at least like e^{-alpha tau} (amplitude and velocity amplitude); once
 // below 1e-17 of the segment's u and v scales they no longer change a double (dead_tau), and
 // below the sample scales they are dropped from samples (sample_dead_tau).
 void QuietPhase::set_dead_times(GrooveRun& s) const {
   const RunStore::Run& rec = store_.run(s.first);
-  if (!rec.modes) {
-    // No modes (q0 = p0 = 0): the envelope is zero, so each time is 0 where its scales are
-    // positive and the modes decay, infinity otherwise, as time_below gives. Only whether the
-    // scales are positive is needed: the first nonzero row settles it, not a pass over all rows.
-    bool decays = rec.shape->n > 0;
-    for (const DampedMode& m : rec.shape->modes) decays = decays && m.alpha > 0 && m.s > 0;
-    bool u_pos = false, v_pos = false;
-    for (int i = s.first; i < s.first + s.n && !(u_pos && v_pos); ++i) {
-      u_pos = u_pos || 1e-17 * std::fabs(store_.path_u(i, span_.t0)) > 0;
-      v_pos = v_pos || 1e-17 * std::fabs(store_.B(i)) > 0;
-    }
-    s.dead_tau = decays && u_pos && v_pos ? 0.0 : kInf;
-    s.sample_dead_tau = std::min(s.dead_tau, decays && scales_.u > 0 && scales_.v > 0 ? 0.0 : kInf);
-    return;
-  }
+  // Without modes only whether the scales are positive counts (below): the first rows that make
+  // them so settle it, not a pass over all rows.
   double uscale = 0, vscale = 0;
-  for (int i = s.first; i < s.first + s.n; ++i) {
+  for (int i = s.first; i < s.first + s.n && (rec.modes || !(1e-17 * uscale > 0 && 1e-17 * vscale > 0)); ++i) {
     uscale = std::max(uscale, std::fabs(store_.path_u(i, span_.t0)));
     vscale = std::max(vscale, std::fabs(store_.B(i)));
   }
-  const TransientEnvelope env = store_.envelope(store_.run(s.first));
-  s.dead_tau = env.time_below(1e-17 * uscale, 1e-17 * vscale);
-  s.sample_dead_tau = std::min(s.dead_tau, env.time_below(scales_.u, scales_.v));
+  if (rec.modes) {
+    const TransientEnvelope env = store_.envelope(rec);
+    s.dead_tau = env.time_below(1e-17 * uscale, 1e-17 * vscale);
+    s.sample_dead_tau = std::min(s.dead_tau, env.time_below(scales_.u, scales_.v));
+    return;
+  }
+  // No modes (q0 = p0 = 0): the envelope is zero, so each time is 0 where its scales are
+  // positive and the modes decay, infinity otherwise, as time_below gives.
+  bool decays = rec.shape->n > 0;
+  for (const DampedMode& m : rec.shape->modes) decays = decays && m.alpha > 0 && m.s > 0;
+  s.dead_tau = decays && 1e-17 * uscale > 0 && 1e-17 * vscale > 0 ? 0.0 : kInf;
+  s.sample_dead_tau = std::min(s.dead_tau, decays && scales_.u > 0 && scales_.v > 0 ? 0.0 : kInf);
 }
 
 void QuietPhase::begin(const Chain& c, double t0, const double* u, const double* v) {
@@ -104,7 +88,12 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
   live_.clear();
   for (std::size_t k = 0; k < segs_.size(); ++k) {
     GrooveRun& s = segs_[k];
-    take_record(c, s, u, v);
+    const BlockRange r{s.first, s.first + s.n};
+    const RunStore::Run* held = store_.exact(r);
+    if (held != nullptr && (held->owner == RunStore::kSettled || held->owner == RunStore::kModal))
+      store_.rebase(s.first, t0);
+    else
+      store_.project(c, r, t0, u, v, nullptr, RunStore::kQuiet);
     set_dead_times(s);
     if (store_.run(s.first).modes) live_.push_back(static_cast<int>(k));
   }
@@ -112,18 +101,19 @@ void QuietPhase::begin(const Chain& c, double t0, const double* u, const double*
     interior_.a[k] = c.driving_force(interior_.blocks[k], u, v, t0);
   for (std::size_t x = 0; x < edges_.list.size(); ++x) {
     Edge& e = edges_.list[x];
+    EdgeForce& f = edges_.forces[x];
     double a = c.driving_force(e.block, u, v, t0), b = c.k_s(e.block) * c.v_slider;
-    for (int n = 0; n < e.nseg; ++n) {
-      const GrooveRun& s = segs_[e.seg[n]];
-      const double* row = s.shape->row(e.row[n]);
-      const double k_nb = edges_.forces[x].k[n];
-      b += k_nb * store_.B(s.first + e.row[n]);
+    for (int n = 0; n < f.n; ++n) {
+      const GrooveRun& s = segs_[f.term[n] / 2];  // term 2 g + end: segment g's first or last row
+      const int i = f.term[n] % 2 == 0 ? s.first : s.first + s.n - 1;
+      b += f.k[n] * store_.B(i);
       // A record without modes has q0 = 0: its terms would subtract zeros.
       if (!store_.run(s.first).modes) continue;
-      for (int k = 0; k < s.n; ++k) a -= k_nb * row[k] * store_.q0()[s.first + k];
+      const double* row = s.shape->row(i - s.first);
+      for (int k = 0; k < s.n; ++k) a -= f.k[n] * row[k] * store_.q0()[s.first + k];
     }
     e.march.set_affine(a, b);
-    edges_.forces[x].fa = a, edges_.forces[x].fb = b;
+    f.fa = a, f.fb = b;
   }
 }
 
@@ -170,11 +160,12 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
   edges_.order.clear();
   for (std::size_t k = 0; k < edges_.list.size(); ++k) {
     Edge& e = edges_.list[k];
+    const EdgeForce& f = edges_.forces[k];
     bool modes = false;
-    for (int n = 0; n < e.nseg; ++n) modes = modes || segs_[e.seg[n]].dead_tau > 0;
+    for (int n = 0; n < f.n; ++n) modes = modes || segs_[f.term[n] / 2].dead_tau > 0;
     if (!modes) {
       e.lower = kInf;  // never searched below
-      const double tau = affine_crossing(edges_.forces[k].fa, edges_.forces[k].fb, c.f_static[e.block]);
+      const double tau = affine_crossing(f.fa, f.fb, c.f_static[e.block]);
       if (tau < best || (tau == best && block >= 0 && e.block < block)) best = tau, block = e.block;
     } else {
       e.lower = e.march.lower_bound(store_.q0(), store_.p0(), c.f_static[e.block]);
@@ -186,7 +177,8 @@ QuietPhase::Next QuietPhase::next_threshold(const Chain& c, double t_limit) {
     edges_.order.resize(edges_.list.size());
     for (std::size_t k = 0; k < edges_.list.size(); ++k) edges_.order[k] = static_cast<int>(k);
   }
-  std::sort(edges_.order.begin(), edges_.order.end(), [&](int x, int y) { return edges_.list[x].lower < edges_.list[y].lower; });
+  std::sort(edges_.order.begin(), edges_.order.end(),
+            [&](int x, int y) { return edges_.list[x].lower < edges_.list[y].lower; });
   for (int k : edges_.order) {
     Edge& e = edges_.list[k];
     if (e.lower > best) break;

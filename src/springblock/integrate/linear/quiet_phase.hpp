@@ -43,13 +43,10 @@ class QuietPhase {
     double dead_tau = 0;  // after this the modes are below round-off of u and v (evaluate skips them)
     double sample_dead_tau = 0;  // after this they are below the sample scales (samples skip them)
   };
-  // A contact block and the segments it borders: its force is a + b tau + modal part (the
-  // affine part in the phase's EdgeForce of the same index, edge_forces()).
+  // A contact block and the segments it borders: its force is a + b tau + modal part (the affine
+  // part and those segments' ends in the phase's EdgeForce of the same index).
   struct Edge {
     int block;
-    int nseg = 0;
-    int seg[2] = {-1, -1};
-    int row[2] = {0, 0};  // the segment's row of the groove block beside it
     EdgeMarch march;
     double lower = 0;  // lower bound on its crossing in the current phase
   };
@@ -107,28 +104,15 @@ class QuietPhase {
   // positions u; grooves get 0), valid after all_dead_after().
   void affine_forces(const Chain& c, const double* u, double* a, double* b) const;
 
-  // What its RingingForces (quiet_ringing.hpp) reads: the phase's start, its segments (their
-  // records in the store), the contact blocks beside them (edges: each force's affine part and
-  // the segment ends it rings with, as RingingForces numbers them, with the springs between) and
-  // those beside none (each with its force at t0, all with the slider's slope K_s v), and the
-  // sample cursor.
-  double t0() const { return span_.t0; }
-  double slider_slope() const { return slider_slope_; }
-  const RunStore& store() const { return store_; }
-  const std::vector<GrooveRun>& segments() const { return segs_; }
-  // The segments whose records have modes (the others are on their paths for the whole phase),
-  // and the end of the phase once next_threshold found it (+inf before).
-  const std::vector<int>& live_segments() const { return live_; }
-  double t_next() const { return span_.next; }
-  const std::vector<EdgeForce>& edge_forces() const { return edges_.forces; }
-  const std::vector<double>& interior_forces() const { return interior_.a; }
-  const Coords& cursor() const { return cursor_.x; }
-  long phases() const { return interior_.phase; }  // phases begun so far
-
  private:
+  // Its RingingForces reads the phase's start and end, its segments (their records in the store),
+  // the edges' forces, the blocks beside no segment and the sample cursor (quiet_ringing.hpp).
+  friend class QuietRinging;
   struct Edges {
     std::vector<Edge> list;
-    std::vector<EdgeForce> forces;  // list[k]'s force: fa + fb tau (begin) and its ringing terms
+    // list[k]'s force: fa + fb tau (begin) and the segment ends it rings with, as RingingForces
+    // numbers them, with the springs between.
+    std::vector<EdgeForce> forces;
     std::vector<int> order;  // by increasing lower bound (next_threshold)
   };
   // The contact blocks with no groove neighbour, their forces at t0, and how many phases began.
@@ -144,16 +128,10 @@ class QuietPhase {
     bool valid = false;
   };
 
-  // begin()'s work per segment: its record at t0; the times after which its modes no longer
-  // count.
-  void take_record(const Chain& c, const GrooveRun& s, const double* u, const double* v);
+  // begin()'s work per segment: the times after which its modes no longer count.
   void set_dead_times(GrooveRun& s) const;
-  // u, v of segment s at time t from its modal coordinates q, qd (slots; dead modes: its path),
-  // every row or (ends_only) the rows beside a contact block.
-  void write_segment(const GrooveRun& s, double t, bool live, const double* q, const double* qd, double* u,
-                     double* v, bool ends_only);
 
-  // The phase's start, and its end once next_threshold found it.
+  // The phase's start, and its end once next_threshold found it (+inf before).
   struct Span {
     double t0 = 0, next = 0;
   };
@@ -161,6 +139,7 @@ class QuietPhase {
   double slider_slope_ = 0;  // K_s v: the slope of every contact block's force in a quiet phase
   RunStore& store_;
   std::vector<GrooveRun> segs_;
+  // The segments whose records have modes (the others are on their paths for the whole phase).
   std::vector<int> live_;
   Edges edges_;
   Interior interior_;

@@ -8,22 +8,6 @@
 
 namespace sb::event_detail {
 
-void QuietPhase::write_segment(const GrooveRun& s, double t, bool live, const double* q, const double* qd,
-                               double* u, double* v, bool ends_only) {
-  const RunStore::Run& rec = store_.run(s.first);
-  live = live && rec.modes;  // no modes: its path (the sample cursor holds none of its slots)
-  if (!ends_only) {
-    if (live) store_.write(rec, t, q, qd, u, v);
-    else store_.write_path(rec, t, u, v);
-    return;
-  }
-  for (int i : {s.shape->path.left ? s.first : -1, s.shape->path.right ? s.first + s.n - 1 : -1}) {
-    if (i < 0) continue;
-    u[i] = live ? store_.row_u(i, t, q) : store_.path_u(i, t);
-    v[i] = live ? store_.row_v(i, qd) : store_.B(i);
-  }
-}
-
 void QuietPhase::evaluate(double t, double* u, double* v) {
   const double tau = t - span_.t0;
   for (const GrooveRun& s : segs_) {
@@ -42,8 +26,7 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
                     std::llround(t / dt) % kSampleBlock != 0;
   for (int k : live_) {
     const GrooveRun& s = segs_[k];
-    const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
-    if (!live) continue;
+    if (!(tau <= (ends_only ? s.sample_dead_tau : s.dead_tau))) continue;
     Coords& x = cursor_.x;
     if (step) s.shape->step_sample(x.q.data() + s.first, x.p.data() + s.first);
     else store_.coords(store_.run(s.first), t, x.q.data(), x.p.data());
@@ -54,9 +37,22 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
 
 void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) {
   const double tau = t - span_.t0;
+  const double* q = cursor_.x.q.data();
+  const double* qd = cursor_.x.p.data();
   for (const GrooveRun& s : segs_) {
-    const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau);
-    write_segment(s, t, live, cursor_.x.q.data(), cursor_.x.p.data(), u, v, ends_only);
+    // Dead modes, or none (the sample cursor holds none of its slots): its path.
+    const RunStore::Run& rec = store_.run(s.first);
+    const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau) && rec.modes;
+    if (!ends_only) {
+      if (live) store_.write(rec, t, q, qd, u, v);
+      else store_.write_path(rec, t, u, v);
+      continue;
+    }
+    for (int i : {s.shape->path.left ? s.first : -1, s.shape->path.right ? s.first + s.n - 1 : -1}) {
+      if (i < 0) continue;
+      u[i] = live ? store_.row_u(i, t, q) : store_.path_u(i, t);
+      v[i] = live ? store_.row_v(i, qd) : store_.B(i);
+    }
   }
 }
 

@@ -14,14 +14,14 @@ class QuietRinging final : public RingingForces {
  public:
   explicit QuietRinging(const QuietPhase& phase);
 
-  double t0() const override { return phase_.t0(); }
-  long phase() const override { return phase_.phases(); }
-  const std::vector<double>& interior() const override { return phase_.interior_forces(); }
-  double interior_slope() const override { return phase_.slider_slope(); }
-  const std::vector<EdgeForce>& edges() const override { return phase_.edge_forces(); }
-  int groups() const override { return static_cast<int>(phase_.segments().size()); }
-  const std::vector<int>& live_groups() const override { return phase_.live_segments(); }
-  double tau_end() const override { return phase_.t_next() - phase_.t0(); }
+  double t0() const override { return phase_.span_.t0; }
+  long phase() const override { return phase_.interior_.phase; }
+  const std::vector<double>& interior() const override { return phase_.interior_.a; }
+  double interior_slope() const override { return phase_.slider_slope_; }
+  const std::vector<EdgeForce>& edges() const override { return phase_.edges_.forces; }
+  int groups() const override { return static_cast<int>(phase_.segs_.size()); }
+  const std::vector<int>& live_groups() const override { return phase_.live_; }
+  double tau_end() const override { return phase_.span_.next - phase_.span_.t0; }
 
   // From the sample cursor (QuietPhase::advance_sample of the same time).
   void terms_now(double tau, double* x) const override;
@@ -38,6 +38,8 @@ class QuietRinging final : public RingingForces {
   void clear_summed() { summed_ = false; }
 
  private:
+  double tau_of(long k, double dt) const { return static_cast<double>(k) * dt - phase_.span_.t0; }
+
   const QuietPhase& phase_;
   // Per slot: the modes at a stretch's first sample (bounds); work space of sums and series.
   Coords w0_, w1_;

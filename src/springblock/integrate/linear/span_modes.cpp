@@ -1,7 +1,6 @@
 #include "springblock/integrate/linear/span_modes.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 namespace sb::event_detail {
 namespace {
@@ -24,29 +23,23 @@ SpanModes::SpanModes(const Chain& c, RunStore& store)
 void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockRange>& spans,
                         const std::int64_t* switched_at, std::int64_t since, bool keep_any) {
   // Slots are the blocks' own indices, so a kept run's modes stay where they are.
-  kept_.swap(spans_);
-  spans_.clear();
-  const int N = static_cast<int>(span_of_.size());
+  next_.clear();
   for (const BlockRange& r : spans) {
     const int k = span_of_[r.lo];
-    bool keep = keep_any && k >= 0 && kept_[k].lo == r.lo && kept_[k].hi == r.hi && mine(kept_[k]) != nullptr;
-    for (int i = std::max(r.lo - 1, 0); keep && i < std::min(r.hi + 1, N); ++i) keep = switched_at[i] <= since;
+    const bool keep = keep_any && k >= 0 && spans_[k].lo == r.lo && spans_[k].hi == r.hi &&
+                      mine(spans_[k]) && untouched(r, switched_at, since);
     if (keep) {
-      spans_.push_back(kept_[k]);
-      spans_.back().fresh = false, spans_.back().kept = true;
-      kept_[k].id = -1;
+      next_.push_back(spans_[k]);
+      next_.back().fresh = false;
+      spans_[k].id = -1;
     } else {
-      spans_.push_back({r.lo, r.hi, 0, 0, false, true, false, 0, s.t, s.t});
+      next_.push_back({r, 0, 0, false, true, 0, s.t, s.t});
     }
   }
-  // The runs let go leave the store (kept ones were marked above).
-  for (const Span& sp : kept_) {
-    if (mine(sp) != nullptr) store_.drop(sp.lo);
-    std::fill(span_of_.begin() + sp.lo, span_of_.begin() + sp.hi, -1);
-  }
+  forget();  // the runs let go leave the store (kept ones were marked above)
+  spans_.swap(next_);
   for (std::size_t k = 0; k < spans_.size(); ++k)
     std::fill(span_of_.begin() + spans_[k].lo, span_of_.begin() + spans_[k].hi, static_cast<int>(k));
-  ranges_ = spans;
   for (Span& sp : spans_)
     if (sp.fresh) project_one(c, s, sp);
 }
@@ -58,8 +51,7 @@ void SpanModes::project(const Chain& c, const State& s, const std::vector<BlockR
 // below the stop margin eps_v, to stop a block the instant it restarts. Such a row keeps the
 // difference as a constant, so it starts exactly where the state says.
 void SpanModes::project_one(const Chain& c, const State& s, Span& sp) {
-  const RunStore::Run& rec =
-      store_.project(c, {sp.lo, sp.hi}, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kSpan);
+  const RunStore::Run& rec = store_.project(c, sp, s.t, s.u.data(), s.v.data(), s.dir.data(), RunStore::kSpan);
   sp.id = rec.id;
   sp.grooves = true;
   for (int i = sp.lo; i < sp.hi && sp.grooves; ++i) sp.grooves = !c.contact[i];
@@ -124,11 +116,17 @@ void SpanModes::bring(int k0, int k1, double t) {
 
 void SpanModes::forget() {
   for (const Span& sp : spans_) {
-    if (mine(sp) != nullptr) store_.drop(sp.lo);
+    if (mine(sp)) store_.drop(sp.lo);
     std::fill(span_of_.begin() + sp.lo, span_of_.begin() + sp.hi, -1);
   }
   spans_.clear();
-  ranges_.clear();
+}
+
+bool SpanModes::untouched(BlockRange r, const std::int64_t* switched_at, std::int64_t since) const {
+  const int N = static_cast<int>(span_of_.size());
+  for (int i = std::max(r.lo - 1, 0); i < std::min(r.hi + 1, N); ++i)
+    if (switched_at[i] > since) return false;
+  return true;
 }
 
 }  // namespace sb::event_detail

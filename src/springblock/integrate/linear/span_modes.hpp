@@ -22,7 +22,6 @@
 // derivatives are the store's, taken at the projection, which hold until the next one
 // (row_bound).
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "springblock/integrate/block_range.hpp"
@@ -50,7 +49,7 @@ class SpanModes {
   // other run is projected afresh from s.u and s.v, with t0 = t1 = s.t.
   void project(const Chain& c, const State& s, const std::vector<BlockRange>& spans, const std::int64_t* switched_at,
                std::int64_t since, bool keep_any);
-  // Runs k0 .. k1 - 1 of spans() (one clock, t0): their modes at t0 + h into the step's end,
+  // Runs k0 .. k1 - 1 (one clock, t0): their modes at t0 + h into the step's end,
   // the grid transition for h == H(), the closed form otherwise.
   void advance(int k0, int k1, double h);
   // Their step's end becomes their current state, at time t (the caller's clock for t0 + h).
@@ -59,8 +58,8 @@ class SpanModes {
   void take_at(int k0, int k1, double tau, double t);
   // Their current state moved to time t >= t0 (nothing if they are there).
   void bring(int k0, int k1, double t);
-  // Whether run k was kept by the last projection (not projected afresh), and its current time.
-  bool kept(int k) const { return spans_[k].kept; }
+  // Whether run k was kept by the last projection (read before it moves), and its current time.
+  bool kept(int k) const { return !spans_[k].fresh; }
   double t0(int k) const { return spans_[k].t0; }
   // Runs are held (projected and not forgotten since).
   bool live() const { return !spans_.empty(); }
@@ -72,8 +71,7 @@ class SpanModes {
   // them, and every grooves-only run (the active set judges whether it has rung down).
   void write_near(double t, const std::vector<int>& blocks, double* u, double* v);
   // The same for the runs none of whose blocks, nor the blocks beside them, switched after epoch
-  // `since` (switched_at: per block, the epoch of its last switch). forget() then lets the runs
-  // go: the next projection keeps none.
+  // `since` (switched_at as for project()). forget() then lets the runs go: the next projection keeps none.
   void write_untouched(double t, const std::int64_t* switched_at, std::int64_t since, double* u, double* v);
   void forget();
 
@@ -103,29 +101,31 @@ class SpanModes {
   // modes' amplitude).
   void row_taylor(int i, double* c) const;
 
-  const std::vector<BlockRange>& spans() const { return ranges_; }
-  // A grooves-only run (index in spans()) has rung down below the scales after this time
+  // The runs, in block order.
+  int count() const { return static_cast<int>(spans_.size()); }
+  const BlockRange& span(int k) const { return spans_[k]; }
+  // A grooves-only run (index k < count()) has rung down below the scales after this time
   // (+inf without damping, or for a run holding a contact block), from its modes at the
   // projection (envelope.hpp).
   double settled_after(int k, double eps_u, double eps_v) const;
 
  private:
-  struct Span {
-    int lo, hi;
+  struct Span : BlockRange {
     std::int64_t id;  // its record's serial number in the store
     int since;        // grid steps since the modes were last set from the closed form
     bool grooves;     // no contact block in it
     bool fresh;       // projected by the last project() and not moved since
-    bool kept;        // carried over by the last project()
     int cur;          // which of buf_ holds its current coordinates (the other: its step's end)
     double t0, t1;    // the times of its current coordinates and of its step's end
   };
   void project_one(const Chain& c, const State& s, Span& sp);
-  // The store's record of span sp, if it is still the one sp projected (else nullptr: another
-  // user has taken its blocks, and with them the duty to write them).
-  const RunStore::Run* mine(const Span& sp) const {
-    const RunStore::Run* r = store_.exact({sp.lo, sp.hi});
-    return r != nullptr && r->id == sp.id ? r : nullptr;
+  // Whether none of r's blocks, nor the blocks beside them, switched after epoch since.
+  bool untouched(BlockRange r, const std::int64_t* switched_at, std::int64_t since) const;
+  // The store's record of span sp is still the one sp projected (else another user has taken its
+  // blocks, and with them the duty to write them).
+  bool mine(const Span& sp) const {
+    const RunStore::Run* r = store_.exact(sp);
+    return r != nullptr && r->id == sp.id;
   }
   // Its rows at time t (its coordinates moved there by the closed form into scratch_ first).
   void write_rows(const Span& sp, double t, double* u, double* v, bool ends_only = false);
@@ -134,8 +134,7 @@ class SpanModes {
 
   double H_;
   RunStore& store_;
-  std::vector<Span> spans_, kept_;
-  std::vector<BlockRange> ranges_;
+  std::vector<Span> spans_, next_;  // next_: those of a projection, while it is made
   std::vector<int> span_of_;     // block -> index in spans_ (-1: none)
   std::vector<double> du_, dv_;  // per block: the projection's round-off (project_one)
   Coords buf_[2];                // per run, its current modes and those at its step's end (Span::cur)

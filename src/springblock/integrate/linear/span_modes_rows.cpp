@@ -2,7 +2,6 @@
 // and the rows written into the chain's state.
 #include "springblock/integrate/linear/span_modes.hpp"
 
-#include <algorithm>
 #include <limits>
 
 namespace sb::event_detail {
@@ -16,7 +15,7 @@ void SpanModes::row_taylor(int i, double* c) const {
 
 void SpanModes::write(double t, double* u, double* v, bool ends_only) {
   for (const Span& sp : spans_)
-    if (mine(sp) != nullptr) write_rows(sp, t, u, v, ends_only);
+    if (mine(sp)) write_rows(sp, t, u, v, ends_only);
 }
 
 // Every row of a run, or its end rows (RunStore::write), with their offsets.
@@ -35,17 +34,13 @@ void SpanModes::write_near(double t, const std::vector<int>& blocks, double* u, 
   for (const Span& sp : spans_) {
     bool near = sp.grooves;
     for (std::size_t k = 0; k < blocks.size() && !near; ++k) near = blocks[k] >= sp.lo - 1 && blocks[k] <= sp.hi;
-    if (near && mine(sp) != nullptr) write_rows(sp, t, u, v);
+    if (near && mine(sp)) write_rows(sp, t, u, v);
   }
 }
 
 void SpanModes::write_untouched(double t, const std::int64_t* switched_at, std::int64_t since, double* u, double* v) {
-  for (const Span& sp : spans_) {
-    bool touched = false;
-    const int N = static_cast<int>(span_of_.size());
-    for (int i = std::max(sp.lo - 1, 0); i < std::min(sp.hi + 1, N) && !touched; ++i) touched = switched_at[i] > since;
-    if (!touched && mine(sp) != nullptr) write_rows(sp, t, u, v);
-  }
+  for (const Span& sp : spans_)
+    if (untouched(sp, switched_at, since) && mine(sp)) write_rows(sp, t, u, v);
 }
 
 double SpanModes::settled_after(int k, double eps_u, double eps_v) const {

@@ -44,7 +44,6 @@ bool EventCore::take_event(const ActiveSet::Next& e) {
 void EventCore::begin() {
   sw.sync(c, s);
   sw.apply(c, s, true);
-  if (!sw.touched_list().empty()) obs.switched(c, s, sw.touched_list());
   reclassify(true);
   obs.sample(c, s);
 }
@@ -52,6 +51,7 @@ void EventCore::begin() {
 void EventCore::finish() { active.materialise(s.t, s.u.data(), s.v.data()); }
 
 void EventCore::reclassify(bool from_scratch) {
+  if (!sw.touched_list().empty()) obs.switched(c, s, sw.touched_list());
   if (from_scratch) active.rebuild(c, s);
   else active.update(c, s, sw.touched(), sw.touched_list());
   epochs.switched(sw.touched_list());
@@ -72,7 +72,6 @@ void EventCore::switch_now(bool bring_runs) {
   // followed by one.
   if (bring_runs) active.materialise_near(s.t, s.u.data(), s.v.data(), sw.flagged());
   if (sw.apply(c, s) > 0 && opt.diag.switch_log) opt.diag.switch_log->push_back(s.t);
-  if (!sw.touched_list().empty()) obs.switched(c, s, sw.touched_list());
   reclassify(false);
 }
 

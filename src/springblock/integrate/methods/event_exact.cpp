@@ -9,60 +9,55 @@ namespace sb::event_detail {
 
 ExactEvolve::ExactEvolve(EventCore& core) : core_(core), spans_(core.c, core.store), screen_(core.c) {}
 
-void ExactEvolve::mark_renewed() {
-  const ActiveSet& active = core_.active;
-  // One classification since the last projection lists what it renewed; none renewed nothing
-  // (a promotion or a retirement changes only the runs it moves, and their groups with them);
-  // after more than one (a phase of another evolve step between), nothing is known.
-  const std::int64_t since = active.classifications() - seen_;
-  seen_ = active.classifications();
-  const std::vector<int>& renewed = active.renewed();
-  for (Group& g : old_) {
-    const auto it = std::lower_bound(renewed.begin(), renewed.end(), g.lo);
-    g.stale = since > 1 || (since == 1 && it != renewed.end() && *it < g.hi);
-  }
-}
-
 void ExactEvolve::project() {
   State& s = core_.s;
   WorkTimer timer(s.work, s.work.stepping_s);
   old_.swap(groups_);
   groups_.clear();
-  mark_renewed();
-  spans_.project(core_.c, s, core_.active.stepped(), core_.epochs.switched(), projected_at_, in_step_);
+  // An old group is stale where the last classification renewed a block in its [lo, hi). One
+  // classification since the last projection lists what it renewed; none renewed nothing (a
+  // promotion or a retirement changes only the runs it moves, and their groups with them); after
+  // more than one (a phase of another evolve step between), nothing is known.
+  const ActiveSet& active = core_.active;
+  const std::int64_t since = active.classifications() - seen_;
+  seen_ = active.classifications();
+  const std::vector<int>& renewed = active.renewed();
+  auto stale = [&](const Group& was) {
+    const auto it = std::lower_bound(renewed.begin(), renewed.end(), was.lo);
+    return since > 1 || (since == 1 && it != renewed.end() && *it < was.hi);
+  };
+  spans_.project(core_.c, s, active.stepped(), core_.epochs.switched(), projected_at_, in_step_);
   projected_at_ = valid_at_ = core_.epochs.now();
-  const std::vector<BlockRange>& runs = spans_.spans();
-  const int n = static_cast<int>(runs.size());
+  const int n = spans_.count();
   ClockAudit* audit = core_.opt.diag.audit;
   std::size_t o = 0;  // the first old group not before the one being formed
   for (int k0 = 0; k0 < n;) {
     int k1 = k0 + 1;
-    while (k1 < n && runs[k1].lo == runs[k1 - 1].hi + 1) ++k1;  // a stuck block between them borders both
-    Group g;
-    g.k0 = k0, g.k1 = k1, g.t1 = s.t;
-    g.lo = runs[k0].lo - 1, g.hi = runs[k1 - 1].hi + 1;
+    // A stuck block between two runs borders both.
+    while (k1 < n && spans_.span(k1).lo == spans_.span(k1 - 1).hi + 1) ++k1;
+    Group g{k0, k1, spans_.span(k0).lo - 1, spans_.span(k1 - 1).hi + 1, s.t};
     bool same = true;  // its runs kept, and they made one group before
     for (int k = k0; k < k1 && same; ++k) same = spans_.kept(k);
     while (o < old_.size() && old_[o].lo < g.lo) ++o;
     same = same && o < old_.size() && old_[o].lo == g.lo && old_[o].hi == g.hi;
-    const bool keep = same && !old_[o].stale;
+    const bool keep = same && !stale(old_[o]);
     if (audit != nullptr && same) ++(keep ? audit->kept : audit->renewed);
     if (keep) {
       Group& was = old_[o];
-      if (audit != nullptr && !screen_.current(s, spans_, core_.active, was.watch))
+      if (audit != nullptr && !screen_.current(s, spans_, active, was.watch))
         throw std::logic_error("exact stepper: a group kept its clock across a change its screen reads");
       g.t1 = was.t1, g.h = was.h, g.tau = was.tau;
       g.watch = std::move(was.watch);
     } else {
       spans_.bring(k0, k1, s.t);
-      screen_.rebuild(core_.c, s, spans_, core_.active, k0, k1, g.watch);
+      screen_.rebuild(core_.c, s, spans_, active, k0, k1, g.watch);
     }
     groups_.push_back(std::move(g));
     k0 = k1;
   }
   settle_ = kInf;
   for (int k = 0; k < n; ++k)
-    settle_ = std::min(settle_, spans_.settled_after(k, core_.active.settle_eps_u(), core_.active.settle_eps_v()));
+    settle_ = std::min(settle_, spans_.settled_after(k, active.settle_eps_u(), active.settle_eps_v()));
 }
 
 void ExactEvolve::leave() {
@@ -112,7 +107,7 @@ void ExactEvolve::step_group(Group& g) {
     WorkTimer timer(s.work, s.work.stepping_s);
     if (g.h > 0) spans_.take(g.k0, g.k1, g.t1), SpanScreen::accept(g.watch);  // its clean step, reached
     ++s.work.stepped_attempts;
-    for (int k = g.k0; k < g.k1; ++k) s.work.block_steps += spans_.spans()[k].size();
+    for (int k = g.k0; k < g.k1; ++k) s.work.block_steps += spans_.span(k).size();
     spans_.advance(g.k0, g.k1, H);
   }
   const double tau = [&] {
@@ -149,17 +144,15 @@ void ExactEvolve::step() {
     if (core_.take_event(stop.event)) switch_now();
     return;
   }
-  Group* g = &groups_.front();  // the group whose screen has looked least far ahead
-  for (Group& x : groups_)
-    if (x.t1 < g->t1) g = &x;
-  if (g->t1 == s.t && !g->event()) {
-    step_group(*g);
+  Group& g = *std::ranges::min_element(groups_, {}, &Group::t1);  // the group whose screen has looked least far ahead
+  if (g.t1 == s.t && !g.event()) {
+    step_group(g);
     return;
   }
-  if (g->t1 < stop.t || (g->event() && g->t1 == stop.t)) {
-    // Nothing anywhere before g->t1: the chain's time moves there.
-    s.t = g->t1;
-    if (g->event()) take_event(*g, stop);
+  if (g.t1 < stop.t || (g.event() && g.t1 == stop.t)) {
+    // Nothing anywhere before g.t1: the chain's time moves there.
+    s.t = g.t1;
+    if (g.event()) take_event(g, stop);
     else moved_on();
     return;
   }

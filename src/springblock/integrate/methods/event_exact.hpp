@@ -46,20 +46,16 @@ class ExactEvolve {
   // event at t0 + tau, +inf if none).
   struct Group {
     int k0, k1;
+    int lo, hi;  // the blocks whose kind, run or switch its screen reads: its runs and borders
     double t1;
     double h = 0, tau = 0;
     bool event() const { return h > 0 && tau <= h; }
-    bool stale = false;  // the last classification renewed a block in [lo, hi) (mark_renewed)
-    int lo = 0, hi = 0;  // the blocks whose kind, run or switch its screen reads: its runs and borders
-    SpanScreen::Watch watch;
+    SpanScreen::Watch watch{};
   };
   // The runs projected afresh from the state at s.t where they changed, and grouped; a group
   // whose runs were all kept and whose surroundings the last classification did not renew keeps
   // its clock and screen, every other is brought to s.t and screened afresh.
   void project();
-  // Marks each group of the previous projection (old_) stale where the last classification
-  // renewed a block it reads.
-  void mark_renewed();
   // Group g, at s.t with nothing screened ahead, steps by H.
   void step_group(Group& g);
   // Group g's event, the earliest in the chain, at s.t = g.t1 (with a closed-form event due at

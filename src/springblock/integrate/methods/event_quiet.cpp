@@ -68,16 +68,15 @@ bool QuietEvolve::serve_samples(double t_next) {
   affine_ready_ = false;
   long long next_offer = core_.clock.index();  // a declined stretch is not offered again sample by sample
   while (core_.clock.next() < t_next) {
-    // An affine stretch, else a block of sums, else one sample (a stretch not taken leaves `stopped` false).
-    bool stopped = false;
-    const bool stretch = (core_.clock.next() >= dead_after && sample_affine_stretch(t_next, stopped)) ||
-                         (core_.opt.ends_only && core_.clock.index() >= next_offer &&
-                          offer_block(std::min(t_next, dead_after), stopped, next_offer));
-    if (!stretch) {
+    // An affine stretch, else a block of sums, else one sample.
+    long used = core_.clock.next() >= dead_after ? sample_affine_stretch(t_next) : 0;
+    if (used <= 0 && core_.opt.ends_only && core_.clock.index() >= next_offer)
+      used = offer_block(std::min(t_next, dead_after), next_offer);
+    if (used <= 0) {
       serve_sample(core_.clock.next());
-      took_samples(1, stopped);
+      used = 1;
     }
-    if (stopped) return false;
+    if (took_samples(used)) return false;
   }
   return true;
 }
@@ -94,32 +93,31 @@ void QuietEvolve::serve_sample(double t) {
   else core_.obs.sample(core_.c, sample_);
 }
 
-// The clock past `used` samples (one served, or those an observer took at once); if it then wants
-// to stop, the state is brought to the last of them.
-void QuietEvolve::took_samples(long used, bool& stopped) {
+// The clock past `used` samples (one served, or those an observer took at once); true when it
+// then wants to stop, the state brought to the last of them.
+bool QuietEvolve::took_samples(long used) {
   core_.clock.advance(used);
-  if (core_.obs.wants_stop()) {
-    const double t_last = core_.clock.time_of(core_.clock.index() - 1);
-    quiet_.evaluate(t_last, core_.s.u.data(), core_.s.v.data());
-    core_.s.t = t_last;
-    stopped = true;
-  }
+  if (!core_.obs.wants_stop()) return false;
+  const double t_last = core_.clock.time_of(core_.clock.index() - 1);
+  quiet_.evaluate(t_last, core_.s.u.data(), core_.s.v.data());
+  core_.s.t = t_last;
+  return true;
 }
 
 // The samples from the clock's next to the next multiple of QuietPhase::kSampleBlock, before
 // t_stop, offered as one stretch (Observer::sample_sums) with the forces' closed-form sums over it
 // and bounds from its start (RingingForces), for an observer of the mu_d window or of the
-// loading peak; false when it was not taken (next_offer: the first sample at which a stretch is
+// loading peak; the samples taken, 0 if none (next_offer: the first sample at which a stretch is
 // offered again). The stretch ends where the sample recurrence restarts (an aligned index) or
 // where the phase's samples end, so the samples after it are served as they would be without
 // it; a sample looked at inside it (at) is brought there by the recurrence through every sample
 // before it, the doubles one-by-one service gives.
-bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offer) {
+long QuietEvolve::offer_block(double t_stop, long long& next_offer) {
   const long long k0 = core_.clock.index();
   const long block = QuietPhase::kSampleBlock;
   const long long k_end = std::min((k0 / block + 1) * block, core_.clock.first_at_or_after(t_stop));
   const long n = static_cast<long>(k_end - k0);
-  if (n <= 0) return false;
+  if (n <= 0) return 0;
   const double dt = core_.clock.dt();
   long long cursor = k0 - 1;  // the last sample advance_sample was brought to in this stretch
   ringing_.clear_summed();
@@ -141,13 +139,11 @@ bool QuietEvolve::offer_block(double t_stop, bool& stopped, long long& next_offe
   // cost more mode evaluations than it saved (callgrind, periodic:10,10 N = 360 1 s x4: 1669 M
   // against 1666 M).
   next_offer = k_end;
-  if (used <= 0) return false;
-  (ringing_.summed() ? core_.s.work.summed_samples : core_.s.work.peak_samples) += used;
-  took_samples(used, stopped);
-  return true;
+  if (used > 0) (ringing_.summed() ? core_.s.work.summed_samples : core_.s.work.peak_samples) += used;
+  return used;
 }
 
-bool QuietEvolve::sample_affine_stretch(double t_next, bool& stopped) {
+long QuietEvolve::sample_affine_stretch(double t_next) {
   if (!affine_ready_) {
     quiet_.affine_forces(core_.c, core_.s.u.data(), fa_.data(), fb_.data());
     affine_ready_ = true;
@@ -155,12 +151,10 @@ bool QuietEvolve::sample_affine_stretch(double t_next, bool& stopped) {
   // Samples k dt < t_next, counted exactly as the clock will produce them.
   const long long k0 = core_.clock.index(), k_end = core_.clock.first_at_or_after(t_next);
   stamp_sample(core_.clock.next());
-  const long used = core_.obs.sample_affine(core_.c, sample_, static_cast<long>(k0), core_.clock.dt(), static_cast<long>(k_end - k0),
-                                       AffineForces{fa_.data(), fb_.data()});
-  if (used <= 0) return false;
-  core_.s.work.stretch_samples += used;
-  took_samples(used, stopped);
-  return true;
+  const long used = core_.obs.sample_affine(core_.c, sample_, static_cast<long>(k0), core_.clock.dt(),
+                                            static_cast<long>(k_end - k0), AffineForces{fa_.data(), fb_.data()});
+  if (used > 0) core_.s.work.stretch_samples += used;
+  return used;
 }
 
 // Everything but the kinematics that an observer reads from a sample at t: its time, the work

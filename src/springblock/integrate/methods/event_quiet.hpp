@@ -31,12 +31,12 @@ class QuietEvolve {
   bool serve_samples(double t_next);
   void serve_sample(double t);
   void stamp_sample(double t);
-  // Quiet-phase samples once every groove has rung down: one affine stretch (false when the
-  // observer took none, so the caller samples one by one).
-  bool sample_affine_stretch(double t_next, bool& stopped);
+  // Quiet-phase samples once every groove has rung down: one affine stretch (the samples taken;
+  // 0 when the observer took none, so the caller samples one by one).
+  long sample_affine_stretch(double t_next);
   // A block of quiet-phase samples taken as sums over the modes.
-  bool offer_block(double t_stop, bool& stopped, long long& next_offer);
-  void took_samples(long used, bool& stopped);
+  long offer_block(double t_stop, long long& next_offer);
+  bool took_samples(long used);
 
   EventCore& core_;
   QuietPhase quiet_;

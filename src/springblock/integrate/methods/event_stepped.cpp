@@ -37,7 +37,17 @@ void SteppedEvolve::step() {
   }();
   const bool reached = stop.reached(clipped);
   if (theta <= 1.0) {
-    step_to_event<Coupled, Damped>(spans, h_try * theta, theta == 1.0 && clipped, stop.t);
+    // The step redone to the earliest event (at the very end of a step clipped to stop.t, that is
+    // the time exactly), and the blocks found there flagged.
+    const double h_event = h_try * theta;
+    if (h_event > 0.0) {
+      ++s.work.event_steps;
+      attempt<Coupled, Damped>(spans, h_event);
+      take_step_end(spans);
+      s.t = theta == 1.0 && clipped ? stop.t : s.t + h_event;
+      ++s.steps;
+    }
+    for (int i : search_.hits()) core_.sw.flag(i);
     // A closed-form event due at the same instant switches with them.
     if (theta == 1.0 && reached && !stop.event.recheck) core_.sw.flag(stop.event.block);
     core_.switch_now();
@@ -73,19 +83,6 @@ double SteppedEvolve::attempt(const std::vector<BlockRange>& spans, double h) {
                                                   core_.sw.f_kin(), control_.atol_u(), control_.atol_v(), control_.rtol());
   s.rhs_evals += 6;
   return err;
-}
-
-template <bool Coupled, bool Damped>
-void SteppedEvolve::step_to_event(const std::vector<BlockRange>& spans, double h_event, bool at_stop, double t_stop) {
-  State& s = core_.s;
-  if (h_event > 0.0) {
-    ++s.work.event_steps;
-    attempt<Coupled, Damped>(spans, h_event);
-    take_step_end(spans);
-    s.t = at_stop ? t_stop : s.t + h_event;
-    ++s.steps;
-  }
-  for (int i : search_.hits()) core_.sw.flag(i);
 }
 
 void SteppedEvolve::take_step_end(const std::vector<BlockRange>& spans) {

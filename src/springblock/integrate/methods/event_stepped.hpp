@@ -30,10 +30,6 @@ class SteppedEvolve {
   // One trial of size h from s.t; returns its error (units of the tolerance).
   template <bool Coupled, bool Damped>
   double attempt(const std::vector<BlockRange>& spans, double h);
-  // The step redone to h_event (the earliest event), and the blocks found there flagged. at_stop:
-  // the event is at the very end of a step clipped to t_stop, which is then the time exactly.
-  template <bool Coupled, bool Damped>
-  void step_to_event(const std::vector<BlockRange>& spans, double h_event, bool at_stop, double t_stop);
   // The stepped blocks take the end of the last attempted step.
   void take_step_end(const std::vector<BlockRange>& spans);
 
