@@ -65,9 +65,8 @@ double EventSearch::locate(const Chain& c, const State& s, const Dopri5& dp, dou
       lo = 0.5, g_lo = g_half, hi = 1.0, g_hi = g(i, 1.0);
       if (!(g_hi <= 0)) continue;
     }
-    hi = first_root([&](double th) { return g(i, th); }, lo, g_lo, hi, g_hi, width);
-    theta_[k] = hi;
-    if (hi < best) best = hi;
+    theta_[k] = first_root([&](double th) { return g(i, th); }, lo, g_lo, hi, g_hi, width);
+    if (theta_[k] < best) best = theta_[k];
   }
   hits_.clear();
   if (best <= 1.0)

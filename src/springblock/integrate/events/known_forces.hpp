@@ -16,7 +16,7 @@ namespace sb::event_detail {
 
 class KnownForces {
  public:
-  explicit KnownForces(int N) : a_(N, 0.0), b_(N, 0.0), kind_(N, ActiveForces::kNone), live_at_(N, -1), listed_(N, 0) {}
+  explicit KnownForces(int N) : a_(N, 0.0), b_(N, 0.0), kind_(N, ActiveForces::kNone), live_at_(N), listed_(N, 0) {}
 
   // Stuck block i feels a + b t from now on (t absolute).
   void affine(int i, double a, double b) { set(i, ActiveForces::kAffine, a, b); }
@@ -45,7 +45,6 @@ class KnownForces {
         live_at_[live_.back()] = live_at_[i];
         live_[static_cast<std::size_t>(live_at_[i])] = live_.back();
         live_.pop_back();
-        live_at_[i] = -1;
       }
     }
     kind_[i] = kind;
@@ -54,7 +53,7 @@ class KnownForces {
 
   std::vector<double> a_, b_;
   std::vector<std::uint8_t> kind_;
-  std::vector<int> live_, live_at_;  // the live blocks, and each one's index in live_ (-1: not live)
+  std::vector<int> live_, live_at_;  // the live blocks, and each live block's index in live_
   std::vector<int> changed_;
   std::vector<std::uint8_t> listed_;  // per block: in changed_
   bool all_ = true;                   // nothing delivered yet: every block counts as changed

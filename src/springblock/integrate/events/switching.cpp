@@ -9,7 +9,7 @@ namespace sb::event_detail {
 
 void Switching::sync(const Chain& c, const State& s) {
   n_sliding_ = 0;
-  std::fill(dir_seen_.begin(), dir_seen_.end(), 0);
+  std::fill(mobile_.begin(), mobile_.end(), 0.0);  // update() then counts no block as sliding before
   for (int i = 0; i < c.N; ++i) update(c, s, i);
 }
 
@@ -43,26 +43,28 @@ int apply_rules(const Chain& c, State& s, int i, bool event_here) {
   return made;
 }
 
-void throw_cascade(std::int64_t limit, double t) {
-  throw std::runtime_error("switching cascade: more than " + std::to_string(limit) +
-                           " stick/slip switches at t = " + std::to_string(t) +
-                           " s without time advancing (is mu_d > mu_s kept for some block?)");
+void CascadeGuard::add(const Chain& c, double t, std::int64_t made) {
+  if (t != instant_) {
+    instant_ = t;
+    at_instant_ = 0;
+  }
+  at_instant_ += made;
+  const std::int64_t limit = 100LL * c.N;
+  if (at_instant_ > limit)
+    throw std::runtime_error("switching cascade: more than " + std::to_string(limit) +
+                             " stick/slip switches at t = " + std::to_string(t) +
+                             " s without time advancing (is mu_d > mu_s kept for some block?)");
 }
 
 void Switching::update(const Chain& c, const State& s, int i) {
   const bool sliding = s.dir[i] != 0;
-  n_sliding_ += static_cast<int>(sliding) - static_cast<int>(dir_seen_[i] != 0);
-  dir_seen_[i] = s.dir[i];
+  // Until it is rewritten below, mobile_ says whether a contact block was sliding.
+  n_sliding_ += static_cast<int>(sliding) - static_cast<int>(c.contact[i] && mobile_[i] != 0.0);
   mobile_[i] = (!c.contact[i] || sliding) ? 1.0 : 0.0;
   f_kin_[i] = s.dir[i] * c.f_kinetic[i];
 }
 
 int Switching::apply(const Chain& c, State& s, bool full) {
-  if (s.t != instant_) {
-    instant_ = s.t;
-    at_instant_ = 0;
-  }
-  const std::int64_t limit = 100LL * c.N;
   if (full) {
     work_.clear();
     for (int i = 0; i < c.N; ++i)
@@ -71,9 +73,8 @@ int Switching::apply(const Chain& c, State& s, bool full) {
     work_ = flagged_.list();
   }
   int made = 0;
-  bool first_pass = true, changed = true;
-  while (changed) {
-    changed = false;
+  for (bool first_pass = true;; first_pass = false) {
+    int pass = 0;
     for (int i : work_) {
       if (!c.contact[i]) continue;
       const int m = apply_rules(c, s, i, first_pass && flagged_.has(i));
@@ -81,14 +82,13 @@ int Switching::apply(const Chain& c, State& s, bool full) {
         touched_.add(i);
         update(c, s, i);
       }
-      made += m;
-      changed = changed || m > 0;
+      pass += m;
     }
     if (first_pass) flagged_.clear();
-    first_pass = false;
-    if (at_instant_ + made > limit) throw_cascade(limit, s.t);
+    cascade_.add(c, s.t, pass);
+    made += pass;
+    if (pass == 0) break;
   }
-  at_instant_ += made;
   s.switches += made;
   return made;
 }

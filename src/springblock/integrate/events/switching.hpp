@@ -12,8 +12,7 @@
 // deterministic. Nothing else can switch at the instant: a switch moves no block, so it changes
 // no other block's force (only the switched block's own velocity), and every other block's
 // event is located by the integrator at its own time. The first apply of a run (full = true)
-// visits every contact block in index order. Each switch is counted; more than 100 N at one instant is a cascade that
-// would never end, reported as std::runtime_error.
+// visits every contact block in index order. Each switch is counted (CascadeGuard).
 #include <cstdint>
 #include <vector>
 
@@ -26,12 +25,22 @@ namespace sb::event_detail {
 // The rules above for contact block i at s.t, one pass; returns the switches made (a stop may
 // be followed by a restart in the same pass). Shared with the per-block solver (uncoupled.hpp).
 int apply_rules(const Chain& c, State& s, int i, bool event_here);
-// Reports a switching cascade: more than `limit` switches at time t.
-[[noreturn]] void throw_cascade(std::int64_t limit, double t);
+
+// The switches made at one instant: more than 100 N there is a cascade that would never end,
+// reported as std::runtime_error.
+class CascadeGuard {
+ public:
+  // Counts `made` more switches at time t; throws on a cascade.
+  void add(const Chain& c, double t, std::int64_t made);
+
+ private:
+  double instant_ = -1;
+  std::int64_t at_instant_ = 0;
+};
 
 class Switching {
  public:
-  explicit Switching(int N) : flagged_(N), touched_(N), dir_seen_(N, 0), mobile_(N), f_kin_(N) {}
+  explicit Switching(int N) : flagged_(N), touched_(N), mobile_(N), f_kin_(N) {}
 
   // Mark a block whose event was located at the current instant (cleared by apply()).
   void flag(int i) { flagged_.add(i); }
@@ -57,11 +66,9 @@ class Switching {
 
   BlockSet flagged_, touched_;
   std::vector<int> work_;
-  std::vector<std::int8_t> dir_seen_;  // s.dir as mobile_ / f_kin_ last saw it
   std::vector<double> mobile_, f_kin_;
   int n_sliding_ = 0;
-  double instant_ = -1;            // time of the last apply, to count switches per instant
-  std::int64_t at_instant_ = 0;    // switches made at that time so far
+  CascadeGuard cascade_;
 };
 
 }  // namespace sb::event_detail

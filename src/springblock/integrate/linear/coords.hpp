@@ -1,6 +1,5 @@
 #pragma once
-// Modal coordinates q and their rates p, one per slot (the run store puts mode k of the run
-// starting at block lo in slot lo + k): a run's state at one time as its users keep it.
+// Modal coordinates q and their rates p, one per slot (run_store.hpp): a run's state at one time as its users keep it.
 #include <vector>
 
 namespace sb::event_detail {

@@ -68,9 +68,9 @@ double first_stop_tau(const DampedMode& mode, double x0, double p0, int dir, dou
   };
   double lo = 0, x = x0, xd = p0, g_lo = dir * (v_slider + p0);
   for (int interval = 0; interval < 100000; ++interval) {
-    // Moving forward faster than the mode can ever swing back: no stop, ever. A swing that would
-    // reverse the velocity by less than kStopMargin v_s (a creeping block whose v only touches 0)
-    // is not a stop either.
+    // Moving forward faster than the mode can ever swing back (its energy bound sqrt(x'^2 + omega^2 x^2)
+    // never increases): no stop, ever. A swing that would reverse the velocity by less than
+    // kStopMargin v_s (a creeping block whose v only touches 0) is not a stop either.
     if (dir * v_slider > 0 && std::sqrt(xd * xd + w2 * x * x) <= dir * v_slider * (1.0 + kStopMargin)) return kInf;
     double hi = next_zero(mode, a0, j0, lo);
     if (hi == kInf) {

@@ -18,13 +18,6 @@ namespace {
 // some 5 % more.
 constexpr double kStepRadians = 0.75;
 
-// The exact stepper's step for chain c.
-double step_for(const Chain& c) {
-  // Every run's modes are below sqrt((K_s + 4 K_int) / m); an overdamped mode decays no faster
-  // than gamma. The step is set by the faster of the two, so the Taylor bound above holds for all.
-  return kStepRadians / std::max(c.omega_max(), c.gamma);
-}
-
 // The modes of a run in closed form. Its stiffness is K_s I + K_int L, L the Laplacian of a path
 // of n blocks whose end rows lose their outer spring at a free chain end. With every block alike,
 // L's eigenvectors are sampled sines and cosines (the discrete sine and cosine transforms),
@@ -80,13 +73,15 @@ void Factors::solve(const double* f, double* y) const {
   for (int r = n - 2; r >= 0; --r) y[r] -= upper[r] * y[r + 1];
 }
 
+// Every run's modes are below sqrt((K_s + 4 K_int) / m); an overdamped mode decays no faster than gamma. The step is
+// set by the faster of the two, so the Taylor bound of kStepRadians holds for all.
 RunShapes::RunShapes(const Chain& c)
-    : c_(c), step_(step_for(c)), march_step_(EdgeMarch::grid_step(c.omega_max())) {}
+    : c_(c), step_(kStepRadians / std::max(c.omega_max(), c.gamma)), march_step_(EdgeMarch::grid_step(c.omega_max())) {}
 
 const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts) {
   const std::size_t slot = 4 * static_cast<std::size_t>(n) + 2 * left + right;
   if (slot >= index_.size()) index_.resize(slot + 1, nullptr);
-  if (index_[slot] == nullptr) index_[slot] = &shapes_.emplace(std::make_tuple(n, left, right), make({0, n}, left, right)).first->second;
+  if (index_[slot] == nullptr) index_[slot] = &shapes_.emplace_back(make({0, n}, left, right));
   RunShape& sh = *index_[slot];
   if ((sh.steps.parts & parts) != parts) add_parts(sh, parts);
   return sh;
@@ -185,9 +180,7 @@ void RunShapes::set_sample_transitions(RunShape& sh) const {
 
 void RunShapes::set_sample_dt(double dt) {
   sample_dt_ = dt;
-  for (auto& [key, sh] : shapes_)
-    if (sh.steps.parts & RunShape::kSample) set_sample_transitions(sh);
-  for (auto& [key, sh] : by_content_)
+  for (RunShape& sh : shapes_)
     if (sh.steps.parts & RunShape::kSample) set_sample_transitions(sh);
 }
 

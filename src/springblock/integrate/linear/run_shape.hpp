@@ -19,11 +19,11 @@
 //     and the constants of the bounds on a row's derivatives.
 // On a chain of identical blocks K depends only on (n, left held, right held) and its modes are
 // sampled sines and cosines (run_shape.cpp), so the shapes are keyed by that triple. A chain of
-// blocks that differ keys them by the run's blocks instead and solves K Q = W Q diag(lambda), W
-// the masses over the chain's nominal m (general_modes.hpp): that is the general case, and these
-// closed forms its fast special case (W = I). A deviation x projects onto the modes as Q^T W x.
+// blocks that differ keys them by the run's blocks instead, and its modes are the general case
+// (general_modes.hpp) of which these closed forms are the fast special case (W = I).
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <utility>
 #include <tuple>
@@ -37,8 +37,7 @@
 
 namespace sb::event_detail {
 
-// K's symmetric tridiagonal elimination (Thomas' algorithm: K is diagonally dominant, so no
-// pivoting is needed): K^-1 of any right-hand side in O(n).
+// K's factors by Thomas' algorithm (K is diagonally dominant, so no pivoting is needed).
 struct Factors {
   std::vector<double> diag, off;         // K: diagonal, and the n - 1 entries beside it
   std::vector<double> inv_pivot, upper;  // 1 / pivot_r, and off_r / pivot_r
@@ -47,8 +46,7 @@ struct Factors {
   void solve(const double* f, double* y) const;
 };
 
-// The affine path's pieces: B, and A = a0 + u_left gL + u_right gR - K^-1 f_kin, with whether a
-// stuck block holds each end (else it is a free chain end, and gL or gR is 0).
+// The affine path's pieces (above), and whether a stuck block holds each end (else a free chain end: gL or gR is 0).
 struct AffinePieces {
   std::vector<double> B, a0, gL, gR;
   bool left = false, right = false;
@@ -63,7 +61,6 @@ struct Spectrum {
   std::vector<double> c[4];
 };
 
-// Per mode, its exact transitions over the steps its users take, made as they ask (Parts).
 struct Transitions {
   std::uint8_t parts = 0;  // those made so far
   // Over the sample spacing, and the first row of (I - P)^-1 for the sum of a mode over
@@ -118,9 +115,8 @@ class RunShapes {
  public:
   // Transitions over the exact stepper's step (step()) and EdgeMarch's grid step.
   explicit RunShapes(const Chain& c);
-  // The shape of run r of the chain, with the transitions `parts` (RunShape::Parts) made.
-  // References stay valid for the life of this object. A uniform chain's shapes depend on the
-  // run's length and ends only (get); a chain whose blocks differ has one per run (general).
+  // The shape of run r of the chain, with the transitions `parts` (RunShape::Parts) made: get on a uniform chain,
+  // general on one whose blocks differ. References stay valid for the life of this object.
   const RunShape& of(BlockRange r, std::uint8_t parts = 0) {
     return c_.uniform() ? get(r.size(), r.lo > 0, r.hi < c_.N, parts) : general(r, parts);
   }
@@ -132,7 +128,7 @@ class RunShapes {
   // The exact stepper's step: 0.75 rad of the fastest rate any run's mode can have.
   double step() const { return step_; }
   double march_step() const { return march_step_; }
-  int size() const { return static_cast<int>(shapes_.size() + by_content_.size()); }
+  int size() const { return static_cast<int>(shapes_.size()); }
 
  private:
   // The shape of run r, a stuck block holding its left and right ends as the flags say (on a
@@ -144,12 +140,12 @@ class RunShapes {
   void set_sample_transitions(RunShape& sh) const;
   const Chain& c_;
   double step_, march_step_, sample_dt_ = 0;
-  std::map<std::tuple<int, bool, bool>, RunShape> shapes_;
-  std::vector<RunShape*> index_;  // shapes_ by 4 n + 2 left + right: every projection looks one up
+  std::deque<RunShape> shapes_;   // every shape made (a deque: references stay valid)
+  std::vector<RunShape*> index_;  // a uniform chain's by 4 n + 2 left + right: every projection looks one up
   // A chain whose blocks differ: each run (lo, hi) points at the shape of its blocks' values, one
   // for all runs whose blocks are equal (general_key), so their transitions are made once.
   std::map<std::pair<int, int>, RunShape*> ranged_;
-  std::map<std::vector<double>, RunShape> by_content_;
+  std::map<std::vector<double>, RunShape*> by_content_;
 };
 
 }  // namespace sb::event_detail

@@ -1,10 +1,7 @@
-// The shapes of a chain whose blocks differ in slider spring, mass or internal springs: one per
-// run, from the run's own blocks (RunShapes::make, run_shape.cpp), shared by the runs whose blocks
-// are equal; and their modes (general_modes.hpp).
+// The shapes of a chain whose blocks differ (RunShapes::general, run_shape.hpp) and their modes (general_modes.hpp).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -15,16 +12,14 @@
 namespace sb::event_detail {
 
 const RunShape& RunShapes::general(BlockRange r, std::uint8_t parts) {
-  auto it = ranged_.find({r.lo, r.hi});
-  if (it == ranged_.end()) {
-    std::vector<double> key = general_key(r);
-    auto shape = by_content_.find(key);
-    if (shape == by_content_.end()) shape = by_content_.emplace(std::move(key), make(r, r.lo > 0, r.hi < c_.N)).first;
-    it = ranged_.emplace(std::make_pair(r.lo, r.hi), &shape->second).first;
+  RunShape*& sh = ranged_[{r.lo, r.hi}];
+  if (sh == nullptr) {
+    RunShape*& shape = by_content_[general_key(r)];
+    if (shape == nullptr) shape = &shapes_.emplace_back(make(r, r.lo > 0, r.hi < c_.N));
+    sh = shape;
   }
-  RunShape& sh = *it->second;
-  if ((sh.steps.parts & parts) != parts) add_parts(sh, parts);
-  return sh;
+  if ((sh->steps.parts & parts) != parts) add_parts(*sh, parts);
+  return *sh;
 }
 
 // Every value make reads, so that runs with equal keys have equal shapes to the last bit

@@ -9,37 +9,23 @@
 namespace sb::event_detail {
 namespace {
 
-// q = Q^T x and p = Q^T y for the n x n Q given by rows (Qr), accumulated row by row: the loop
-// over modes vectorises, and each mode still sums its rows in order.
-SB_KERNEL_CLONES void rows_times(int n, const double* __restrict Qr, const double* __restrict x,
-                                 const double* __restrict y, double* __restrict q, double* __restrict p) {
-  for (int k = 0; k < n; ++k) q[k] = 0.0, p[k] = 0.0;
-  for (int r = 0; r < n; ++r) {
-    const double* row = Qr + static_cast<std::size_t>(r) * n;
-    const double xr = x[r], yr = y[r];
-    for (int k = 0; k < n; ++k) {
-      q[k] += row[k] * xr;
-      p[k] += row[k] * yr;
+// a = sum_i x[i] M_i and b = sum_i y[i] M_i over the n contiguous length-n vectors M_i of M, accumulated vector by
+// vector: the inner loop vectorises, and each entry still sums its terms in order of i. Over Q's rows (Qr) that is the
+// projection Q^T x; over its columns (Q) it is Q q, each row summed in row_dot's order (the same doubles).
+SB_KERNEL_CLONES void combine(int n, const double* __restrict M, const double* __restrict x, const double* __restrict y,
+                              double* __restrict a, double* __restrict b) {
+  for (int j = 0; j < n; ++j) a[j] = 0.0, b[j] = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double* m = M + static_cast<std::size_t>(i) * n;
+    const double xi = x[i], yi = y[i];
+    for (int j = 0; j < n; ++j) {
+      a[j] += m[j] * xi;
+      b[j] += m[j] * yi;
     }
   }
 }
 
-// su = Q q and sv = Q p for the n x n column-major Q, accumulated mode by mode: the loop over
-// rows vectorises, and each row sums its modes in row_dot's order (the same doubles).
-SB_KERNEL_CLONES void columns_times(int n, const double* __restrict Q, const double* __restrict q,
-                                    const double* __restrict p, double* __restrict su, double* __restrict sv) {
-  for (int r = 0; r < n; ++r) su[r] = 0.0, sv[r] = 0.0;
-  for (int k = 0; k < n; ++k) {
-    const double* col = Q + static_cast<std::size_t>(k) * n;
-    const double qk = q[k], pk = p[k];
-    for (int r = 0; r < n; ++r) {
-      su[r] += col[r] * qk;
-      sv[r] += col[r] * pk;
-    }
-  }
-}
-
-// Runs this short are written row by row (row_dot): the same doubles as columns_times, without
+// Runs this short are written row by row (row_dot): the same doubles as combine, without
 // its set-up, which costs more than the products on a run of a few blocks.
 constexpr int kRowWise = 8;
 
@@ -68,13 +54,11 @@ RunStore::RunStore(const Chain& c)
   for (auto& b : bound_) b.assign(c.N, std::numeric_limits<double>::infinity());
 }
 
-RunStore::Run& RunStore::Records::claim(BlockRange r, const RunShape* shape, Owner owner) {
+RunStore::Run& RunStore::Records::claim(BlockRange r, const RunShape* shape, double t0, bool modes, Owner owner) {
   for (int i = r.lo; i < r.hi; ++i)
     if (first_[i] >= 0) drop(first_[i]);
   std::fill(first_.begin() + r.lo, first_.begin() + r.hi, r.lo);
-  Run& run = runs_[r.lo];
-  run = Run{r.lo, r.hi, shape, 0.0, false, owner, ++serial_};
-  return run;
+  return runs_[r.lo] = Run{r.lo, r.hi, shape, t0, modes, owner, ++serial_};
 }
 
 // A = a0 + u_left gL + u_right gR - K^-1 f_kin and B from the shape's pieces (run_shape.hpp).
@@ -86,9 +70,7 @@ void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::in
     A_[lo + k] = sh.path.A(k, uL, uR);
     B_[lo + k] = sh.path.B[k];
   }
-  bool friction = false;
-  for (int k = 0; dir != nullptr && k < n && !friction; ++k) friction = dir[lo + k] != 0;
-  if (!friction) return;
+  if (dir == nullptr || std::all_of(dir + lo, dir + run.hi, [](std::int8_t d) { return d == 0; })) return;
   double* f = dev_.q.data();
   for (int k = 0; k < n; ++k) f[k] = dir[lo + k] * c.f_kinetic[lo + k];
   sh.K.solve(f, f);
@@ -97,9 +79,7 @@ void RunStore::set_path(const Chain& c, Run& run, const double* u, const std::in
 
 const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, const double* u, const double* v,
                                        const std::int8_t* dir, Owner owner, bool with_modes) {
-  Run& run = records_.claim(r, &shapes_.of(r, parts_for(owner)), owner);
-  run.t0 = t;
-  run.modes = with_modes;
+  Run& run = records_.claim(r, &shapes_.of(r, parts_for(owner)), t, with_modes, owner);
   set_path(c, run, u, dir);
   const int lo = r.lo, n = r.size();
   if (!with_modes) {
@@ -115,7 +95,7 @@ const RunStore::Run& RunStore::project(const Chain& c, BlockRange r, double t, c
     // Q^T W: the rows' masses weigh the deviation on a chain whose blocks differ.
     const std::vector<double>& w = run.shape->weight;
     for (int k = 0; k < static_cast<int>(w.size()); ++k) x[k] *= w[k], y[k] *= w[k];
-    rows_times(n, run.shape->Qr.data(), x, y, modes_.q.data() + lo, modes_.p.data() + lo);
+    combine(n, run.shape->Qr.data(), x, y, modes_.q.data() + lo, modes_.p.data() + lo);
   }
   set_bounds(run, dir);
   return run;
@@ -181,8 +161,7 @@ void RunStore::write(const Run& r, double t, const double* q, const double* p, d
                      const double* du, const double* dv) {
   const int n = r.n(), lo = r.lo;
   const RunShape& sh = *r.shape;
-  // Row k's modal parts into (x, y): by the row itself on short runs (row_dot's sums, both in one
-  // pass), from columns_times on long ones (the same doubles).
+  // Row k's modal parts (x, y): from its row on short runs (both sums in one pass), else from combine.
   auto put = [&](int k, double x, double y) {
     const int i = lo + k;
     u[i] = path_u(i, t) + x;
@@ -200,7 +179,7 @@ void RunStore::write(const Run& r, double t, const double* q, const double* p, d
   } else if (n <= kRowWise) {
     for (int k = 0; k < n; ++k) by_row(k);
   } else {
-    columns_times(n, sh.Q.data(), q + lo, p + lo, sums_.q.data(), sums_.p.data());
+    combine(n, sh.Q.data(), q + lo, p + lo, sums_.q.data(), sums_.p.data());
     for (int k = 0; k < n; ++k) put(k, sums_.q[k], sums_.p[k]);
   }
 }

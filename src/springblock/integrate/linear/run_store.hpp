@@ -102,7 +102,7 @@ class RunStore {
    public:
     explicit Records(int N) : runs_(N), first_(N, -1) {}
     // A new record for r (dropping any record that holds one of its blocks).
-    Run& claim(BlockRange r, const RunShape* shape, Owner owner);
+    Run& claim(BlockRange r, const RunShape* shape, double t0, bool modes, Owner owner);
     void drop(int lo) { std::fill(first_.begin() + runs_[lo].lo, first_.begin() + runs_[lo].hi, -1); }
     bool holds(int i) const { return first_[i] >= 0; }
     const Run& run(int i) const { return runs_[first_[i]]; }
@@ -127,7 +127,6 @@ class RunStore {
     return d;
   }
   void set_path(const Chain& c, Run& run, const double* u, const std::int8_t* dir);
-  // The bounds the run's owner reads, from its modes' energies at t0.
   void set_bounds(const Run& run, const std::int8_t* dir);
 
   double gamma_;

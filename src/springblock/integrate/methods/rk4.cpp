@@ -21,9 +21,7 @@ struct Workspace {
   std::vector<double> a, us, vs, su, sv;
   std::vector<double> mobile;  // 1 = free or sliding, 0 = stuck
   std::vector<double> f_kin;   // signed kinetic friction force of sliding blocks
-  // For the end-of-step screen (switch_screen), kept by set_screen: a sliding contact block
-  // has f_screen = +inf and stop_bias = 0; a stuck one its threshold lowered by a relative
-  // 1e-9 and stop_bias = -inf; a groove block +inf and -inf.
+  // For the end-of-step screen (switch_screen), kept by sync_block like mobile and f_kin.
   struct Screen {
     std::vector<double> slide_dir, f_screen, stop_bias;
   } screen;
@@ -113,9 +111,12 @@ SB_KERNEL_CLONES bool switch_screen(const Coefficients& k, double slider, const 
   return worst >= 0.0;
 }
 
-void set_screen(const Chain& c, const State& s, Workspace& w, int i) {
+// Block i's entries in the workspace, from its contact and s.dir: they change only when it switches.
+void sync_block(const Chain& c, const State& s, Workspace& w, int i) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const bool sliding = c.contact[i] && s.dir[i] != 0, stuck = c.contact[i] && s.dir[i] == 0;
+  w.mobile[i] = (!c.contact[i] || s.dir[i] != 0) ? 1.0 : 0.0;
+  w.f_kin[i] = s.dir[i] * c.f_kinetic[i];
   w.screen.slide_dir[i] = c.contact[i] ? s.dir[i] : 0;
   w.screen.f_screen[i] = stuck ? c.f_static[i] * (1.0 - 1e-9) : inf;
   w.screen.stop_bias[i] = sliding ? 0.0 : -inf;
@@ -130,23 +131,20 @@ int apply_switches(const Chain& c, State& s, Workspace& w) {
     if (s.dir[i] != 0 && s.v[i] * s.dir[i] <= 0.0) {
       s.v[i] = 0.0;  // the velocity reached zero within the step: the block stops
       s.dir[i] = 0;
-      w.mobile[i] = 0.0;
-      w.f_kin[i] = 0.0;
       ++s.switches;
     }
     if (s.dir[i] == 0) {
       const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
       if (std::fabs(F) > c.f_static[i]) {
-        const std::int8_t d = F > 0 ? 1 : -1;
-        s.dir[i] = d;
+        s.dir[i] = F > 0 ? 1 : -1;
         s.mark_slip(i);
-        w.mobile[i] = 1.0;
-        w.f_kin[i] = d * c.f_kinetic[i];
         ++s.switches;
       }
     }
-    if (s.switches != switches_before) w.switched.push_back(i);
-    set_screen(c, s, w, i);
+    if (s.switches != switches_before) {
+      w.switched.push_back(i);
+      sync_block(c, s, w, i);
+    }
     n_sliding += s.dir[i] != 0;
   }
   return n_sliding;
@@ -183,11 +181,7 @@ std::int64_t quiet_steps(const Chain& c, const State& s, std::int64_t n, double 
 template <bool Coupled, bool Damped, bool PerBlock>
 void run_loop(const Chain& c, State& s, double t_end, double sample_dt, Observer& obs, double h, bool screen) {
   Workspace w(c.N);
-  for (int i = 0; i < c.N; ++i) {
-    w.mobile[i] = (!c.contact[i] || s.dir[i] != 0) ? 1.0 : 0.0;
-    w.f_kin[i] = s.dir[i] * c.f_kinetic[i];
-    set_screen(c, s, w, i);
-  }
+  for (int i = 0; i < c.N; ++i) sync_block(c, s, w, i);
   const std::int64_t stride = SampleSchedule::stride(sample_dt, h);
   const std::int64_t n_end = std::llround(t_end / h);
   const bool all_contact = c.n_contact == c.N;

@@ -29,20 +29,22 @@ class Solver {
         s_(s),
         log_(log),
         b_(c.N),
-        modes_(c),
-        friction_{std::vector<double>(c.N, 0.0), std::vector<double>(c.N, 0.0)} {}
+        friction_{std::vector<double>(c.N, 0.0), std::vector<double>(c.N, 0.0)} {
+    for (int i = 0; i < (c.uniform() ? 1 : c.N); ++i) modes_.emplace_back(0.5 * c.gamma, c.k_s(i) / c.mass(i));
+  }
 
   void run(double t_end, double sample_dt, Observer& obs);
 
  private:
+  const DampedMode& mode(int i) const { return modes_[c_.uniform() ? 0 : i]; }
   // Particular solution of moving block i with friction phi at time t.
   double u_p(int i, double phi, double t) const {
-    return c_.v_slider * t - phi / c_.k_s(i) - c_.gamma * c_.v_slider / modes_.of(i).omega2;
+    return c_.v_slider * t - phi / c_.k_s(i) - c_.gamma * c_.v_slider / mode(i).omega2;
   }
   void eval(int i, double t, double& u, double& v) {
     const Block& b = b_[i];
     double x, xd;
-    modes_.of(i).eval(b.x0, b.p0, t - b.t_ref, x, xd);
+    mode(i).eval(b.x0, b.p0, t - b.t_ref, x, xd);
     ++evals_;
     u = u_p(i, b.phi, t) + x;
     v = c_.v_slider + xd;
@@ -60,7 +62,7 @@ class Solver {
     // stop at once and be released again at the same instant, for ever.
     if (phi != 0.0 && s_.v[i] == 0.0) {
       const double deficit = std::copysign(1.0, phi) * (c_.k_s(i) * (c_.v_slider * t - s_.u[i]) - phi);
-      if (deficit < 0.0 && deficit >= -1e-9 * std::fabs(phi)) b.x0 = c_.gamma * c_.v_slider / modes_.of(i).omega2;
+      if (deficit < 0.0 && deficit >= -1e-9 * std::fabs(phi)) b.x0 = c_.gamma * c_.v_slider / mode(i).omega2;
     }
   }
   double first_stop(int i);
@@ -81,22 +83,12 @@ class Solver {
   State& s_;
   std::vector<double>* log_;
   std::vector<Block> b_;
-  // Each block's oscillator on its slider spring: one for a chain of equal blocks.
-  struct Modes {
-    DampedMode uniform;
-    std::vector<DampedMode> block;
-    explicit Modes(const Chain& c) : uniform{0.5 * c.gamma, c.K_s / c.m} {
-      if (!c.uniform())
-        for (int i = 0; i < c.N; ++i) block.push_back(DampedMode{0.5 * c.gamma, c.k_s(i) / c.mass(i)});
-    }
-    const DampedMode& of(int i) const { return block.empty() ? uniform : block[i]; }
-  } modes_;
+  std::vector<DampedMode> modes_;  // each block's oscillator on its slider spring: one for a chain of equal blocks
   struct {
     std::vector<double> a, b;
   } friction_;  // each block's friction force a + b t between its events
   long long evals_ = 0;
-  double instant_ = -1;
-  long long at_instant_ = 0;
+  CascadeGuard cascade_;
   struct Entry {
     double t;
     int i;
@@ -108,7 +100,7 @@ class Solver {
 
 double Solver::first_stop(int i) {
   const Block& b = b_[i];
-  const double tau = first_stop_tau(modes_.of(i), b.x0, b.p0, s_.dir[i], c_.v_slider, b.t_ref, evals_);
+  const double tau = first_stop_tau(mode(i), b.x0, b.p0, s_.dir[i], c_.v_slider, b.t_ref, evals_);
   return tau == kInf ? kInf : b.t_ref + tau;
 }
 
@@ -119,11 +111,6 @@ void Solver::schedule(int i, double t_next) {
 }
 
 void Solver::apply_rules_at(int i, double t, bool event_here) {
-  if (t != instant_) {
-    instant_ = t;
-    at_instant_ = 0;
-  }
-  const long long limit = 100LL * c_.N;
   s_.t = t;
   int made = 0;
   {
@@ -136,10 +123,9 @@ void Solver::apply_rules_at(int i, double t, bool event_here) {
       const int m = apply_rules(c_, s_, i, event_here);
       event_here = false;
       made += m;
-      if (at_instant_ + made > limit) throw_cascade(limit, t);
+      cascade_.add(c_, t, m);
       if (m == 0) break;
     }
-    at_instant_ += made;
     s_.switches += made;
     if (made > 0 && log_ && (log_->empty() || log_->back() != t)) log_->push_back(t);
     update_friction(i);
@@ -199,9 +185,7 @@ void Solver::run(double t_end, double sample_dt, Observer& obs) {
       // The block's state at its event: a sliding block is at rest there, a stuck one unmoved.
       if (s_.dir[i] != 0) {
         WorkTimer timer(s_.work, s_.work.stepping_s);
-        double u, v;
-        eval(i, t_event, u, v);
-        s_.u[i] = u;
+        eval(i, t_event, s_.u[i], s_.v[i]);
         s_.v[i] = 0.0;
       }
       apply_rules_at(i, t_event, true);  // an event always switches its block

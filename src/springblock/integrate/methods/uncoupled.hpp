@@ -9,17 +9,11 @@
 //            (groove). Around the particular solution u_p = v_s t - phi / K_s - gamma v_s / omega^2
 //            the deviation x = u - u_p is one damped mode (damped_mode.hpp), so u and v are
 //            closed form at any time.
-// A sliding block stops at the first tau > 0 with dir (v_s + x'(tau)) <= 0, found to round-off in
-// t between consecutive zeros of x'', with no grid and no grazing bound (first_stop_tau,
-// linear/mode_stop.hpp). If the block moves forward (dir v_s > 0) and the mode's energy bound
-// sqrt(x'^2 + omega^2 x^2) (never increasing) is below v_s (1 + 1e-12, round_off.hpp's stop
-// margin), it never stops: a creeping block (mu_d clipped to mu_s) has no further event at all,
-// also without damping, where its velocity touches 0 once per period. A release whose pull falls
-// short of kinetic friction by round-off only starts from exact force balance (same tolerance as
-// switching.hpp).
-// At an event the stick/slip rules of switching.hpp apply to the one block (a stopped block
-// slides on if its force exceeds f_static; a released block that cannot move against a larger
-// kinetic friction stops again), with the same cascade guard.
+// A sliding block stops where first_stop_tau (linear/mode_stop.hpp) finds it, to round-off in t
+// with no grid and no grazing bound; a creeping block (mu_d clipped to mu_s) never stops there,
+// so it has no further event at all, also without damping.
+// At an event the stick/slip rules of switching.hpp (apply_rules) apply to the one block, with
+// the same cascade guard.
 // Samples: stuck blocks hold their u; moving blocks are evaluated at the sample time unless the
 // observer reads only friction forces (Observer::reads_only_friction()), which for K_int = 0
 // depend on the stuck blocks' u and on dir alone.

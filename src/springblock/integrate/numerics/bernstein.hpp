@@ -21,7 +21,7 @@ class BernsteinRoots {
     double C[D + 1][D + 1] = {};
     for (int n = 0; n <= D; ++n) {
       C[n][0] = 1.0;
-      for (int k = 1; k <= n; ++k) C[n][k] = C[n - 1][k - 1] + (k < n ? C[n - 1][k] : 0.0);
+      for (int k = 1; k <= n; ++k) C[n][k] = C[n - 1][k - 1] + C[n - 1][k];
     }
     for (int i = 0; i <= D; ++i)
       for (int j = 0; j <= i; ++j) ratio_[i][j] = C[i][j] / C[D][j];
@@ -33,7 +33,7 @@ class BernsteinRoots {
   // stops at its start, as the Dormand-Prince search does on a NaN), never a search of every
   // half: the positivity test fails on NaN at every depth.
   bool first_bracket(const double* c, double h, double& lo, double& hi) const {
-    double a[D + 1], b[D + 1];
+    double a[D + 1], b[D + 1] = {};
     double hj = 1.0;
     for (int j = 0; j <= D; ++j) a[j] = c[j] * hj, hj *= h;
     for (int j = 0; j <= D; ++j)
@@ -41,14 +41,11 @@ class BernsteinRoots {
         lo = 0.0, hi = h;
         return true;
       }
-    for (int i = 0; i <= D; ++i) {
-      double sum = 0;
-      for (int j = 0; j <= i; ++j) sum += ratio_[i][j] * a[j];
-      b[i] = sum;
-    }
+    for (int i = 0; i <= D; ++i)
+      for (int j = 0; j <= i; ++j) b[i] += ratio_[i][j] * a[j];
     double s0, s1;
     if (!isolate(b, 0.0, 1.0, 0, s0, s1)) return false;
-    lo = s0 * h, hi = s1 == 1.0 ? h : s1 * h;
+    lo = s0 * h, hi = s1 * h;
     return true;
   }
 

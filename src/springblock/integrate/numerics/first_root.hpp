@@ -87,13 +87,12 @@ template <class GD, class Width>
 double first_root_newton(GD gd, double lo, double glo, double hi, double ghi, Width width, double x, double gx,
                          double dgx) {
   int kept = 0;  // +1: lo kept last time, -1: hi kept last time
-  const bool have = x != kInf;  // x, gx, dgx: the last evaluation (from it > 0 on, or given)
   int stalled = 0;  // Newton points in a row after which the bracket had not halved
   for (int it = 0; it < 200; ++it) {
     const double w = hi - lo, tol = width(hi);
     if (!(w > tol)) break;
     double mid = kInf;
-    if ((it > 0 || have) && dgx != 0 && stalled < 2) {
+    if (x != kInf && dgx != 0 && stalled < 2) {  // x, gx, dgx: the last evaluation, if any
       const double step = -gx / dgx;
       mid = x + step + std::copysign(0.25 * tol, step);
       if (!(mid > lo && mid < hi)) mid = kInf;

@@ -6,7 +6,7 @@
 
 namespace sb::event_detail {
 
-Dopri5::Dopri5(int N) : N_(N), store_(14 * static_cast<std::size_t>(N)), ut_(N), u1_(N) {
+Dopri5::Dopri5(int N) : store_(14 * static_cast<std::size_t>(N)), ut_(N), u1_(N) {
   for (int s = 0; s < 14; ++s) k_[s] = store_.data() + static_cast<std::size_t>(s) * N;
 }
 
@@ -14,7 +14,7 @@ void Dopri5::set_frozen(const double* u, const std::vector<BlockRange>& spans) {
   // Only the borders: copying the whole chain twice at every switch was O(N) per switch.
   for (const BlockRange& sp : spans)
     for (int i : {sp.lo - 1, sp.hi})
-      if (i >= 0 && i < N_) ut_[i] = u1_[i] = u[i];  // stage 7 reads the neighbours from u1
+      if (i >= 0 && i < std::ssize(ut_)) ut_[i] = u1_[i] = u[i];  // stage 7 reads the neighbours from u1
 }
 
 void Dopri5::accept_fsal() {

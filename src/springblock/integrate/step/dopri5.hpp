@@ -4,9 +4,7 @@
 // against atol + rtol |y|, and the pair's 4th-order continuous extension for locating events
 // inside a step. The contact phase is frozen during a step: the caller owns the switching.
 // Only the blocks in the given spans are stepped (the others are stuck or solved exactly
-// elsewhere, see active_set.hpp); the blocks bordering a span must hold their constant
-// positions in u and in the trial array, which set_frozen() copies. No allocation after
-// construction.
+// elsewhere, see active_set.hpp). No allocation after construction.
 #include <vector>
 
 #include "springblock/integrate/block_range.hpp"
@@ -76,21 +74,17 @@ class Dopri5 {
   double error_norm(const std::vector<BlockRange>& spans, const double* u, const double* v, const double* mobile,
                     double atol_u, double atol_v, double rtol) const;
 
-  int N_;
   std::vector<double> store_;  // 14 stage arrays: k_[0..6] = u' stages (velocities), k_[7..13] = v' (accelerations)
   double* k_[14];
-  // Trial positions and the step's end positions; the frozen blocks' entries hold their
-  // constant positions (set_frozen). Trial velocities are written straight into the velocity
-  // stage arrays k_[s], which is what they are.
-  std::vector<double> ut_, u1_;
+  std::vector<double> ut_, u1_;  // trial positions and the step's end positions
   double h_ = 0;
   const double* u0_ = nullptr;
   const double* v0_ = nullptr;
 };
 
 template <bool Coupled, bool Damped>
-SB_KERNEL_CLONES void Dopri5::first_stage(const Chain& c, const std::vector<BlockRange>& spans, const double* u, const double* v,
-                         double t, const double* mobile, const double* f_kin) {
+SB_KERNEL_CLONES void Dopri5::first_stage(const Chain& c, const std::vector<BlockRange>& spans, const double* u,
+                                          const double* v, double t, const double* mobile, const double* f_kin) {
   for (const BlockRange& sp : spans) {
     for (int i = sp.lo; i < sp.hi; ++i) k_[0][i] = v[i];
     chain_accel_of<Coupled, Damped>(c, sp.lo, sp.hi, u, v, t, mobile, f_kin, k_[7]);
@@ -101,35 +95,35 @@ SB_KERNEL_CLONES void Dopri5::first_stage(const Chain& c, const std::vector<Bloc
 // restrict-qualified parameters so GCC vectorises them (through lambdas over an array of stage
 // pointers it did not: the loops compiled to scalar code).
 SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
-                 const double* __restrict k1) {
+                    const double* __restrict k1) {
   for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i]);
 }
 SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
-                 const double* __restrict k1, double w2, const double* __restrict k2) {
+                    const double* __restrict k1, double w2, const double* __restrict k2) {
   for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i]);
 }
 SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
-                 const double* __restrict k1, double w2, const double* __restrict k2, double w3,
-                 const double* __restrict k3) {
+                    const double* __restrict k1, double w2, const double* __restrict k2, double w3,
+                    const double* __restrict k3) {
   for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i] + w3 * k3[i]);
 }
 SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
-                 const double* __restrict k1, double w2, const double* __restrict k2, double w3,
-                 const double* __restrict k3, double w4, const double* __restrict k4) {
+                    const double* __restrict k1, double w2, const double* __restrict k2, double w3,
+                    const double* __restrict k3, double w4, const double* __restrict k4) {
   for (int i = lo; i < hi; ++i) out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i] + w3 * k3[i] + w4 * k4[i]);
 }
 SB_INLINE void comb(int lo, int hi, double* __restrict out, const double* __restrict y, double h, double w1,
-                 const double* __restrict k1, double w2, const double* __restrict k2, double w3,
-                 const double* __restrict k3, double w4, const double* __restrict k4, double w5,
-                 const double* __restrict k5) {
+                    const double* __restrict k1, double w2, const double* __restrict k2, double w3,
+                    const double* __restrict k3, double w4, const double* __restrict k4, double w5,
+                    const double* __restrict k5) {
   for (int i = lo; i < hi; ++i)
     out[i] = y[i] + h * (w1 * k1[i] + w2 * k2[i] + w3 * k3[i] + w4 * k4[i] + w5 * k5[i]);
 }
 
 template <bool Coupled, bool Damped>
-SB_KERNEL_CLONES double Dopri5::attempt(const Chain& c, const std::vector<BlockRange>& spans, const double* u, const double* v,
-                       double t, double h, const double* mobile, const double* f_kin, double atol_u,
-                       double atol_v, double rtol) {
+SB_KERNEL_CLONES double Dopri5::attempt(const Chain& c, const std::vector<BlockRange>& spans, const double* u,
+                                        const double* v, double t, double h, const double* mobile, const double* f_kin,
+                                        double atol_u, double atol_v, double rtol) {
   using T = Dp5Tableau;
   double* ut = ut_.data();
   double* u1 = u1_.data();
