@@ -85,12 +85,12 @@ double Dopri5::error_norm(const std::vector<BlockRange>& spans, const double* u,
                           const double* mobile, double atol_u, double atol_v, double rtol) const {
   // Max norm over the moving components: stuck blocks carry no error, and an RMS over the
   // whole chain would dilute the error of the one block that slides.
+  // A NaN from any span is kept (std::max(worst, NaN) would return worst): it rejects the step.
   double worst = 0;
+  auto keep = [&worst](double e) { worst = std::isnan(e) || e > worst ? e : worst; };
   for (const BlockRange& sp : spans) {
-    worst = std::max(worst, span_error(sp.lo, sp.hi, h_, k_[0], k_[2], k_[3], k_[4], k_[5], k_[6], u,
-                                       u1_.data(), mobile, atol_u, rtol));
-    worst = std::max(worst, span_error(sp.lo, sp.hi, h_, k_[7], k_[9], k_[10], k_[11], k_[12], k_[13], v,
-                                       k_[6], mobile, atol_v, rtol));
+    keep(span_error(sp.lo, sp.hi, h_, k_[0], k_[2], k_[3], k_[4], k_[5], k_[6], u, u1_.data(), mobile, atol_u, rtol));
+    keep(span_error(sp.lo, sp.hi, h_, k_[7], k_[9], k_[10], k_[11], k_[12], k_[13], v, k_[6], mobile, atol_v, rtol));
   }
   return worst;
 }
