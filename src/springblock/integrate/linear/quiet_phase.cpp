@@ -62,7 +62,8 @@ void QuietPhase::set_dead_times(GrooveRun& s) const {
   // Without modes only whether the scales are positive counts (below): the first rows that make
   // them so settle it, not a pass over all rows.
   double uscale = 0, vscale = 0;
-  for (int i = s.first; i < s.first + s.n && (rec.modes || !(1e-17 * uscale > 0 && 1e-17 * vscale > 0)); ++i) {
+  const auto scales_positive = [&] { return 1e-17 * uscale > 0 && 1e-17 * vscale > 0; };
+  for (int i = s.first; i < s.first + s.n && (rec.modes || !scales_positive()); ++i) {
     uscale = std::max(uscale, std::fabs(store_.path_u(i, span_.t0)));
     vscale = std::max(vscale, std::fabs(store_.B(i)));
   }
@@ -76,7 +77,7 @@ void QuietPhase::set_dead_times(GrooveRun& s) const {
   // positive and the modes decay, infinity otherwise, as time_below gives.
   bool decays = rec.shape->n > 0;
   for (const DampedMode& m : rec.shape->modes) decays = decays && m.alpha > 0 && m.s > 0;
-  s.dead_tau = decays && 1e-17 * uscale > 0 && 1e-17 * vscale > 0 ? 0.0 : kInf;
+  s.dead_tau = decays && scales_positive() ? 0.0 : kInf;
   s.sample_dead_tau = std::min(s.dead_tau, decays && scales_.u > 0 && scales_.v > 0 ? 0.0 : kInf);
 }
 
