@@ -19,13 +19,13 @@ int apply_rules(const Chain& c, State& s, int i, bool event_here) {
   // left |F| a hair below f_static.
   const bool crossing = event_here && s.dir[i] == 0;
   if (s.dir[i] != 0) {
-    const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
     const double dv = s.dir[i] * s.v[i];
     // At rest and pulled clearly less than kinetic friction: it cannot move in its
     // direction. With mu_d = mu_s a block released at its threshold has net force zero up
     // to round-off; the slider's loading then accelerates it, so a round-off deficit must
     // not send it back to rest at the same instant (that would be an endless cascade).
-    const bool cannot_go = dv == 0.0 && s.dir[i] * F - c.f_kinetic[i] < -1e-9 * c.f_kinetic[i];
+    const bool cannot_go = dv == 0.0 && s.dir[i] * c.driving_force(i, s.u.data(), s.v.data(), s.t) - c.f_kinetic[i] <
+                                            -1e-9 * c.f_kinetic[i];
     if (event_here || dv < 0.0 || cannot_go) {
       s.v[i] = 0.0;
       s.dir[i] = 0;

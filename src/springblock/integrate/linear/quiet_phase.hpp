@@ -66,9 +66,9 @@ class QuietPhase {
   // The same at a sequence of increasing sample times spaced by the store's sample spacing
   // (RunShapes::set_sample_dt; any other spacing falls back to the closed form), in two halves:
   // the modal coordinates brought to sample time t, then the rows written from them (write_sample
-  // needs the advance_sample of the same t before it). With ends_only, only the groove blocks next
-  // to a contact block are exact (O(modes) per segment instead of O(n^2)); the others are left
-  // untouched. Enough for an observer that reads only the contact blocks' forces.
+  // needs the advance_sample of the same t before it). With ends_only, only each segment's two end
+  // rows are exact (O(modes) per segment instead of O(n^2)); the others are left untouched.
+  // Enough for an observer that reads only the contact blocks' forces.
   // The recurrence restarts from the closed form at the phase's first sample, after a gap in
   // the spacing, and at every sample whose index is a multiple of kSampleBlock: a sample's value
   // then depends only on its index and the phase, not on which samples were served before it

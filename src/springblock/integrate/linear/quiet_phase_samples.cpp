@@ -37,22 +37,13 @@ void QuietPhase::advance_sample(double t, bool ends_only) {
 
 void QuietPhase::write_sample(double t, double* u, double* v, bool ends_only) {
   const double tau = t - span_.t0;
-  const double* q = cursor_.x.q.data();
-  const double* qd = cursor_.x.p.data();
   for (const GrooveRun& s : segs_) {
     // Dead modes, or none (the sample cursor holds none of its slots): its path.
     const RunStore::Run& rec = store_.run(s.first);
-    const bool live = tau <= (ends_only ? s.sample_dead_tau : s.dead_tau) && rec.modes;
-    if (!ends_only) {
-      if (live) store_.write(rec, t, q, qd, u, v);
-      else store_.write_path(rec, t, u, v);
-      continue;
-    }
-    for (int i : {s.shape->path.left ? s.first : -1, s.shape->path.right ? s.first + s.n - 1 : -1}) {
-      if (i < 0) continue;
-      u[i] = live ? store_.row_u(i, t, q) : store_.path_u(i, t);
-      v[i] = live ? store_.row_v(i, qd) : store_.B(i);
-    }
+    if (tau <= (ends_only ? s.sample_dead_tau : s.dead_tau) && rec.modes)
+      store_.write(rec, t, cursor_.x.q.data(), cursor_.x.p.data(), u, v, ends_only);
+    else
+      store_.write_path(rec, t, u, v, ends_only);
   }
 }
 

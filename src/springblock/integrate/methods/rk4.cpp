@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "springblock/integrate/events/switching.hpp"
 #include "springblock/integrate/step/chain_accel.hpp"
 #include "springblock/kernel_clones.hpp"
 #include "springblock/sample_schedule.hpp"
@@ -122,26 +123,15 @@ void sync_block(const Chain& c, const State& s, Workspace& w, int i) {
   w.screen.stop_bias[i] = sliding ? 0.0 : -inf;
 }
 
-// Stick and slip decisions at the end of a step. Returns the number of sliding blocks.
+// Stick and slip decisions at the end of a step: the event method's rules (switching.hpp) with a
+// sliding block's velocity that reached or crossed zero within the step as its located stop, one
+// pass in block order. Returns the number of sliding blocks.
 int apply_switches(const Chain& c, State& s, Workspace& w) {
   int n_sliding = 0;
   for (int i = 0; i < c.N; ++i) {
     if (!c.contact[i]) continue;
-    const std::int64_t switches_before = s.switches;
-    if (s.dir[i] != 0 && s.v[i] * s.dir[i] <= 0.0) {
-      s.v[i] = 0.0;  // the velocity reached zero within the step: the block stops
-      s.dir[i] = 0;
-      ++s.switches;
-    }
-    if (s.dir[i] == 0) {
-      const double F = c.driving_force(i, s.u.data(), s.v.data(), s.t);
-      if (std::fabs(F) > c.f_static[i]) {
-        s.dir[i] = F > 0 ? 1 : -1;
-        s.mark_slip(i);
-        ++s.switches;
-      }
-    }
-    if (s.switches != switches_before) {
+    if (const int made = event_detail::apply_rules(c, s, i, s.dir[i] != 0 && s.v[i] * s.dir[i] <= 0.0)) {
+      s.switches += made;
       w.switched.push_back(i);
       sync_block(c, s, w, i);
     }
