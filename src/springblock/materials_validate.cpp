@@ -16,14 +16,16 @@ struct Range {
   const char* text;
 };
 
-// Means and spreads as the scene's own; scales positive, an internal spring's may be 0 (the
-// chain is cut there: RK4 integrates the two pieces as they are).
+// Means and spreads as the scene's own; an internal spring's scale may be 0 (the chain is cut
+// there: RK4 integrates the two pieces as they are). A block's slider spring and mass stay within
+// eight decades of the scene's either way, as the springs' upper bound: a mass scale of 1e-300
+// gives a mode no solver can follow (paper/choices.md, materials).
 Range range_of(BlockField f) {
   switch (f) {
     case BlockField::Contact: return {0, 1, false, "0 or 1"};
     case BlockField::KIntScale: return {0, 1e8, false, "[0, 1e8]"};
     case BlockField::KsScale:
-    case BlockField::MassScale: return {0, 1e8, true, "(0, 1e8]"};
+    case BlockField::MassScale: return {1e-8, 1e8, false, "[1e-8, 1e8]"};
     default: return {0, 100, false, "[0, 100]"};
   }
 }

@@ -74,7 +74,8 @@ expect_error 'mu_s\n1\n1\n' "has 2 rows; the scene has N = 3 blocks"
 expect_error 'mu_s\tmu_s_sd\n1\t0.1\n1\t-0.1\n1\t0.1\n' "line 3 (row 2, block 1), column mu_s_sd: value -0.1 is outside the allowed range [0, 100]"
 expect_error 'mu_s\n1\nx\n1\n' "line 3: column mu_s: 'x' is not a number"
 expect_error 'mu_s\n1\ninf\n1\n' "column mu_s: value inf is outside"
-expect_error 'k_s_scale\n1\n0\n1\n' "column k_s_scale: value 0 is outside the allowed range (0, 1e8]" --method rk4
+expect_error 'k_s_scale\n1\n0\n1\n' "column k_s_scale: value 0 is outside the allowed range [1e-8, 1e8]" --method rk4
+expect_error 'mass_scale\n1\n1e-300\n1\n' "column mass_scale: value 1e-300 is outside the allowed range [1e-8, 1e8]"
 expect_error 'contact\n0\n0\n0\n' "no block in contact"
 expect_error 'contact\n0\n0.5\n1\n' "column contact: value 0.5 is outside the allowed range 0 or 1"
 expect_error 'mu_s\tmu_d\n1\t0.5\n0.4\t0.5\n1\t0.5\n' "mu_d mean 0.5 exceeds the mu_s mean 0.4"

@@ -123,7 +123,16 @@ TEST(MaterialsValidate, RangesRowsAndMethods) {
   s.materials = parse_materials_tsv("mu_s\n1\n1\n", "m.tsv");
   EXPECT_TRUE(has(msg(s), "'m.tsv' has 2 rows; the scene has N = 3 blocks")) << msg(s);
   s.materials = parse_materials_tsv("mass_scale\n1\n0\n1\n", "m.tsv");
-  EXPECT_TRUE(has(msg(s), "column mass_scale: value 0 is outside the allowed range (0, 1e8]")) << msg(s);
+  EXPECT_TRUE(has(msg(s), "column mass_scale: value 0 is outside the allowed range [1e-8, 1e8]")) << msg(s);
+  // Both ends of the slider spring's and the mass's range are in it; just beyond them is not.
+  for (const char* ok : {"1e-08", "1e+08"}) {
+    s.materials = parse_materials_tsv(std::string("mass_scale\tk_s_scale\n1\t1\n") + ok + "\t" + ok + "\n1\t1\n", "m.tsv");
+    EXPECT_NO_THROW(validate(s)) << ok;
+  }
+  s.materials = parse_materials_tsv("mass_scale\n1\n9.9e-9\n1\n", "m.tsv");
+  EXPECT_TRUE(has(msg(s), "column mass_scale: value 9.9e-09 is outside the allowed range [1e-8, 1e8]")) << msg(s);
+  s.materials = parse_materials_tsv("k_s_scale\n1\n1e-300\n1\n", "m.tsv");
+  EXPECT_TRUE(has(msg(s), "column k_s_scale: value 1e-300 is outside the allowed range [1e-8, 1e8]")) << msg(s);
   s.materials = parse_materials_tsv("contact\n0\n0\n0\n", "m.tsv");
   EXPECT_TRUE(has(msg(s), "no block in contact")) << msg(s);
   s.materials = parse_materials_tsv("mu_d\n0.5\n1.2\n0.5\n", "m.tsv");
