@@ -1,4 +1,5 @@
 // validate(Scene): every range a scene must lie in, checked once where the scene is made.
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -145,6 +146,27 @@ void validate_rk4_step(const Scene& s) {
   require(steps <= 1e13, "dt", r.dt_s, "a run of at most 1e13 steps (duration / dt)");
 }
 
+// Whether the run's times stay apart in double arithmetic. Samples come every sample_dt, RK4
+// steps by dt (validate_rk4_step), and the exact methods by at most 0.75 rad of the chain's
+// fastest rate (omega_max, or the damping where it is larger: an overdamped mode's decay) where
+// blocks move. More than 1e13 samples or such steps over the run would put consecutive times
+// within ~450 round-offs of t (2^-52 duration), and below one they stop advancing: the run would
+// never end. So both counts are bounded as RK4's steps are; a rate that overflowed (omega^2 = inf
+// from a vanishing mass) fails the same test.
+void validate_resolution(const Scene& s) {
+  const double T = s.duration();
+  require(T / s.run.sample_dt_s <= 1e13, "sample_dt", s.run.sample_dt_s,
+          "a run of at most 1e13 samples (duration / sample_dt, duration = " + printed(T) + " s)");
+  if (s.run.method == Method::RK4) return;
+  const double rate = std::max(std::sqrt(mode_band(s).w2_hi), s.material.gamma_per_s);
+  if (!(rate * T <= 7.5e12))
+    throw InputError("duration", "the chain's fastest rate " + printed(rate) + " /s (omega_max, or the damping where larger) turns " +
+                                     printed(rate * T) + " rad over the run's " + printed(T) +
+                                     " s, and the exact methods step at most 0.75 rad at a time; the allowed range is at "
+                                     "most 7.5e12 rad (1e13 steps, each above ~450 round-offs of t): shorten the "
+                                     "duration, or give a chain with slower modes");
+}
+
 // The extraction rules, and whether the run can measure anything: runs that cannot are refused
 // here rather than averaged over no samples. The loading phase ends at a sample after t = 0, and
 // mu_d averages the samples after that one, from (first slip + mu_d_skip) on: a run needs at
@@ -192,6 +214,7 @@ void validate(const Scene& s) {
   validate_materials(s);
   validate_run_control(s.run);
   if (s.run.method == Method::RK4) validate_rk4_step(s);
+  validate_resolution(s);
   validate_measurable(s);
 }
 
