@@ -12,7 +12,6 @@ namespace {
 
 struct Range {
   double lo, hi;
-  bool lo_open;
   const char* text;
 };
 
@@ -22,17 +21,17 @@ struct Range {
 // gives a mode no solver can follow (paper/choices.md, materials).
 Range range_of(BlockField f) {
   switch (f) {
-    case BlockField::Contact: return {0, 1, false, "0 or 1"};
-    case BlockField::KIntScale: return {0, 1e8, false, "[0, 1e8]"};
+    case BlockField::Contact: return {0, 1, "0 or 1"};
+    case BlockField::KIntScale: return {0, 1e8, "[0, 1e8]"};
     case BlockField::KsScale:
-    case BlockField::MassScale: return {1e-8, 1e8, false, "[1e-8, 1e8]"};
-    default: return {0, 100, false, "[0, 100]"};
+    case BlockField::MassScale: return {1e-8, 1e8, "[1e-8, 1e8]"};
+    default: return {0, 100, "[0, 100]"};
   }
 }
 
 bool in_range(BlockField f, double x) {
   const Range r = range_of(f);
-  if (!std::isfinite(x) || x > r.hi || x < r.lo || (r.lo_open && x == r.lo)) return false;
+  if (!std::isfinite(x) || x > r.hi || x < r.lo) return false;
   return f != BlockField::Contact || x == 0.0 || x == 1.0;
 }
 

@@ -18,6 +18,10 @@ void require(bool ok, const std::string& field, double value, const std::string&
 
 bool finite(double x) { return std::isfinite(x); }
 
+// The most steps or samples a run may take: past it consecutive times lie within ~450 round-offs
+// of t (validate_resolution).
+constexpr double kMaxTimes = 1e13;
+
 // RK4 is stable for a mode when |R(h lambda)| <= 1, R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24. With
 // damping a mode of frequency w has lambda = -gamma/2 +- sqrt(gamma^2/4 - w^2); every w^2 lies in
 // the Gershgorin band [K_s, K_s + 4 K_int] / m. Overdamped modes reach lambda ~ -gamma, where the
@@ -143,7 +147,7 @@ void validate_rk4_step(const Scene& s) {
                                  printed(h_damped) + " s (overdamped modes need h * gamma <= 2.785)");
   }
   const double steps = s.duration() / r.dt_s;
-  require(steps <= 1e13, "dt", r.dt_s, "a run of at most 1e13 steps (duration / dt)");
+  require(steps <= kMaxTimes, "dt", r.dt_s, "a run of at most 1e13 steps (duration / dt)");
 }
 
 // Whether the run's times stay apart in double arithmetic. Samples come every sample_dt, RK4
@@ -155,11 +159,11 @@ void validate_rk4_step(const Scene& s) {
 // from a vanishing mass) fails the same test.
 void validate_resolution(const Scene& s) {
   const double T = s.duration();
-  require(T / s.run.sample_dt_s <= 1e13, "sample_dt", s.run.sample_dt_s,
+  require(T / s.run.sample_dt_s <= kMaxTimes, "sample_dt", s.run.sample_dt_s,
           "a run of at most 1e13 samples (duration / sample_dt, duration = " + printed(T) + " s)");
   if (s.run.method == Method::RK4) return;
   const double rate = std::max(std::sqrt(mode_band(s).w2_hi), s.material.gamma_per_s);
-  if (!(rate * T <= 7.5e12))
+  if (!(rate * T <= 0.75 * kMaxTimes))
     throw InputError("duration", "the chain's fastest rate " + printed(rate) + " /s (omega_max, or the damping where larger) turns " +
                                      printed(rate * T) + " rad over the run's " + printed(T) +
                                      " s, and the exact methods step at most 0.75 rad at a time; the allowed range is at "

@@ -124,7 +124,7 @@ TEST(MaterialsValidate, RangesRowsAndMethods) {
   EXPECT_TRUE(has(msg(s), "'m.tsv' has 2 rows; the scene has N = 3 blocks")) << msg(s);
   s.materials = parse_materials_tsv("mass_scale\n1\n0\n1\n", "m.tsv");
   EXPECT_TRUE(has(msg(s), "column mass_scale: value 0 is outside the allowed range [1e-8, 1e8]")) << msg(s);
-  // Both ends of the slider spring's and the mass's range are in it; just beyond them is not.
+  // Both ends of the slider spring's and the mass's range are in it; below the lower end is not.
   for (const char* ok : {"1e-08", "1e+08"}) {
     s.materials = parse_materials_tsv(std::string("mass_scale\tk_s_scale\n1\t1\n") + ok + "\t" + ok + "\n1\t1\n", "m.tsv");
     EXPECT_NO_THROW(validate(s)) << ok;
