@@ -7,6 +7,7 @@
 #include <string>
 
 #include "springblock/errors.hpp"
+#include "springblock/integrate/integrator.hpp"
 #include "springblock/scene.hpp"
 
 namespace sb {
@@ -151,7 +152,7 @@ void validate_rk4_step(const Scene& s) {
 }
 
 // Whether the run's times stay apart in double arithmetic. Samples come every sample_dt, RK4
-// steps by dt (validate_rk4_step), and the exact methods by at most 0.75 rad of the chain's
+// steps by dt (validate_rk4_step), and the exact methods by at most kExactStepRadians of the chain's
 // fastest rate (omega_max, or the damping where it is larger: an overdamped mode's decay) where
 // blocks move. More than 1e13 samples or such steps over the run would put consecutive times
 // within ~450 round-offs of t (2^-52 duration), and below one they stop advancing: the run would
@@ -163,7 +164,7 @@ void validate_resolution(const Scene& s) {
           "a run of at most 1e13 samples (duration / sample_dt, duration = " + printed(T) + " s)");
   if (s.run.method == Method::RK4) return;
   const double rate = std::max(std::sqrt(mode_band(s).w2_hi), s.material.gamma_per_s);
-  if (!(rate * T <= 0.75 * kMaxTimes))
+  if (!(rate * T <= kExactStepRadians * kMaxTimes))
     throw InputError("duration", "the chain's fastest rate " + printed(rate) + " /s (omega_max, or the damping where larger) turns " +
                                      printed(rate * T) + " rad over the run's " + printed(T) +
                                      " s, and the exact methods step at most 0.75 rad at a time; the allowed range is at "

@@ -21,6 +21,11 @@ class Integrator {
   virtual bool samples_within(double t, double t_end) const { return t <= t_end; }
 };
 
+// The exact stepper's longest step, in radians of the chain's fastest rate (omega_max, or the
+// damping where larger): the run shapes step by it (run_shape.cpp says why 0.75), and scene
+// validation bounds a run's count of such steps.
+inline constexpr double kExactStepRadians = 0.75;
+
 std::unique_ptr<Integrator> make_integrator(const RunControl& rc);
 
 }  // namespace sb

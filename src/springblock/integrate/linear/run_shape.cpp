@@ -4,19 +4,20 @@
 #include <cmath>
 #include <limits>
 
+#include "springblock/integrate/integrator.hpp"
 #include "springblock/integrate/linear/edge_march.hpp"
 #include "springblock/integrate/linear/general_modes.hpp"
 
 namespace sb::event_detail {
 namespace {
 
-// The longest step of the exact stepper in radians of the fastest rate: a step turns every mode
-// by at most 0.75 rad, so the screen's Hermite allowance M4 H^4 / 384 is ~1/1200 of a row's
+// The longest step of the exact stepper, kExactStepRadians of the fastest rate: a step turns every
+// mode by at most 0.75 rad, so the screen's Hermite allowance M4 H^4 / 384 is ~1/1200 of a row's
 // amplitude and the Taylor remainder over a step (degree 13 of u, so 12 of its velocity) below
 // 0.75^14 / 14! ~ 2e-13 of it. Chosen by measurement (paper/choices.md, Integration): 0.5 rad with
 // degree 10 and 1 rad with degree 14 cost a few per cent more per switch, 0.35 rad with degree 8
 // some 5 % more.
-constexpr double kStepRadians = 0.75;
+static_assert(kExactStepRadians == 0.75, "the bounds above are worked out for 0.75 rad");
 
 // The modes of a run in closed form. Its stiffness is K_s I + K_int L, L the Laplacian of a path
 // of n blocks whose end rows lose their outer spring at a free chain end. With every block alike,
@@ -74,9 +75,9 @@ void Factors::solve(const double* f, double* y) const {
 }
 
 // Every run's modes are below sqrt((K_s + 4 K_int) / m); an overdamped mode decays no faster than gamma. The step is
-// set by the faster of the two, so the Taylor bound of kStepRadians holds for all.
+// set by the faster of the two, so the Taylor bound of kExactStepRadians holds for all.
 RunShapes::RunShapes(const Chain& c)
-    : c_(c), step_(kStepRadians / std::max(c.omega_max(), c.gamma)), march_step_(EdgeMarch::grid_step(c.omega_max())) {}
+    : c_(c), step_(kExactStepRadians / std::max(c.omega_max(), c.gamma)), march_step_(EdgeMarch::grid_step(c.omega_max())) {}
 
 const RunShape& RunShapes::get(int n, bool left, bool right, std::uint8_t parts) {
   const std::size_t slot = 4 * static_cast<std::size_t>(n) + 2 * left + right;
