@@ -62,7 +62,8 @@ double plain_rk4_mu_s(const Chain& c, double h, double sample_dt) {
   for (;; ++n) {
     const double t = n * h;
     rhs(u, v, t);
-    for (int i = 0; i < N; ++i) su[i] = ku[i], sv[i] = kv[i];  // not vector=: a memmove the sanitizer intercepts
+    // Element by element, not vector=: that is a memmove, which the sanitizer build intercepts.
+    for (int i = 0; i < N; ++i) su[i] = ku[i], sv[i] = kv[i];
     for (double stage : {0.5 * h, 0.5 * h, h}) {
       for (int i = 0; i < N; ++i) us[i] = u[i] + stage * ku[i], vs[i] = v[i] + stage * kv[i];
       rhs(us, vs, t + stage);
