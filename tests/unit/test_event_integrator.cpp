@@ -16,6 +16,7 @@
 
 #include "forwarding_observer.hpp"
 #include "hand_chain.hpp"
+#include "null_observer.hpp"
 #include "springblock/integrate/linear/quiet_phase.hpp"
 #include "springblock/integrate/methods/rk4.hpp"
 #include "springblock/observe/friction_observer.hpp"
@@ -23,11 +24,6 @@
 #include "springblock/theory.hpp"
 
 namespace {
-
-class NullObserver final : public sb::Observer {
- public:
-  void sample(const sb::Chain&, const sb::State&) override {}
-};
 
 // The paper's default block (N = 200, L_x = 4 cm): m = 2.4 mg, K_s = 1e4 N/m, F_n = 2 N.
 sb::Chain single_block(double mu_s, double mu_d) {
@@ -67,7 +63,7 @@ double single_block_error(double tol, bool fast_forward = false) {
   sb::EventDriven ev(tol, fast_forward);
   std::vector<double> log;
   ev.set_switch_log(&log);
-  NullObserver obs;
+  sbtest::NullObserver obs;
   const double t_end = expect.back() + 0.5 * cyc.T_s_s;
   ev.run(c, s, t_end, 1e-3, obs);
   EXPECT_EQ(log.size(), expect.size());
@@ -137,7 +133,7 @@ TEST(EventIntegrator, QuietPhaseMatchesFineStepping) {
 
     sb::State s = s0;
     sb::EventDriven fine(1e-13, false);
-    NullObserver obs;
+    sbtest::NullObserver obs;
     fine.run(c, s, T, 1.0, obs);
     ASSERT_DOUBLE_EQ(s.t, T);
     double umax = 0, vmax = 0;
@@ -181,7 +177,7 @@ TEST(EventIntegrator, EdgeSearchFindsFirstSlipWithRingingModes) {
     sb::EventDriven fine(1e-12, false);
     std::vector<double> log;
     fine.set_switch_log(&log);
-    NullObserver obs;
+    sbtest::NullObserver obs;
     fine.run(c, s, T, 1.0, obs);
     ASSERT_FALSE(log.empty()) << "fraction " << fractions[n];
     std::printf("ringing edge, margin %.2f swing: quiet search t = %.15g (block %d), DP5 1e-12 t = %.15g\n",
@@ -452,7 +448,7 @@ TEST(EventIntegrator, CascadeIsReportedNotHung) {
   auto task = std::async(std::launch::async, [c] {
     sb::State s = sb::State::at_rest(c);
     sb::EventDriven ev(1e-9);
-    NullObserver obs;
+    sbtest::NullObserver obs;
     try {
       ev.run(c, s, 0.3, 1e-3, obs);
       return std::string("ran, switches ") + std::to_string(s.switches);

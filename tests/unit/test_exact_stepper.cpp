@@ -29,13 +29,13 @@ sb::Scene small_scene(int N, const char* pattern, double duration_t0, bool stop_
   return sc;
 }
 
-struct Outcome {
+struct StepperRun {
   std::vector<double> log;  // the instants with a switch
   double mu_s = 0;
   std::int64_t rhs = 0, switches = 0;
 };
 
-Outcome run(const sb::Scene& sc, sb::EventDriven& e) {
+StepperRun run(const sb::Scene& sc, sb::EventDriven& e) {
   const sb::Chain c = sb::build_chain(sc, 0);
   sb::State s = sb::State::at_rest(c);
   sb::FrictionObserverConfig cfg;
@@ -43,7 +43,7 @@ Outcome run(const sb::Scene& sc, sb::EventDriven& e) {
   cfg.peak_rule = sb::ExtractionRules::PeakRule::AllSlipped;  // up to the whole surface's slip: many switches
   cfg.stop_after_mu_s = sc.run.stop_after_mu_s;
   sb::FrictionObserver obs(cfg);
-  Outcome r;
+  StepperRun r;
   e.set_switch_log(&r.log);
   e.run(c, s, sc.duration(), sc.run.sample_dt_s, obs);
   r.mu_s = obs.mu_s();
@@ -75,7 +75,7 @@ TEST(ExactStepper, AgreesWithTightSteppingToTheFirstPeak) {
     sb::Scene sc = small_scene(48, k.pattern, 2.0, true);
     if (!k.damped) sc.material.gamma_per_s = 0;
     sb::EventDriven exact(1e-8, true), ref = reference();
-    const Outcome a = run(sc, exact), b = run(sc, ref);
+    const StepperRun a = run(sc, exact), b = run(sc, ref);
     std::printf("%s N=48 %s: exact mu_s %.12f (%zu instants, rhs %lld) | dopri5 1e-12 mu_s %.12f (rhs %lld)\n",
                 k.pattern, k.damped ? "damped" : "undamped", a.mu_s, a.log.size(), (long long)a.rhs, b.mu_s,
                 (long long)b.rhs);
@@ -96,7 +96,7 @@ TEST(ExactStepper, RunsOnTheirOwnClocksMeetTheReference) {
   for (const char* pattern : {"smooth", "periodic:4,4", "hierarchical:12,3,1"}) {
     const sb::Scene sc = small_scene(400, pattern, 2.0, true);
     sb::EventDriven exact(1e-8, true), ref = reference();
-    const Outcome a = run(sc, exact), b = run(sc, ref);
+    const StepperRun a = run(sc, exact), b = run(sc, ref);
     std::printf("%s N=400: exact mu_s %.12f (%zu instants) | dopri5 1e-12 mu_s %.12f\n", pattern, a.mu_s,
                 a.log.size(), b.mu_s);
     ASSERT_EQ(a.log.size(), b.log.size()) << pattern;
@@ -142,7 +142,7 @@ TEST(ExactStepper, LongRunsFallBackToDormandPrince) {
   const sb::Scene sc = small_scene(48, "smooth", 2.0, true);
   sb::EventDriven mixed(1e-10, true), ref = reference();
   mixed.set_exact_stepper(true, 3);
-  const Outcome a = run(sc, mixed), b = run(sc, ref);
+  const StepperRun a = run(sc, mixed), b = run(sc, ref);
   std::printf("smooth N=48, exact_max_run 3: mu_s %.12f rhs %lld | reference %.12f\n", a.mu_s, (long long)a.rhs, b.mu_s);
   EXPECT_GT(a.rhs, 0);  // the fallback stepped something
   ASSERT_EQ(a.log.size(), b.log.size());
@@ -161,7 +161,7 @@ TEST(ExactStepper, CreepingBlocksDoNotStutter) {
   sc.friction.mu_d_mean = 0.9;
   sb::EventDriven exact(1e-8, true), tight(1e-11, true);
   tight.set_exact_stepper(false);
-  const Outcome a = run(sc, exact), b = run(sc, tight);
+  const StepperRun a = run(sc, exact), b = run(sc, tight);
   std::printf("smooth N=40 r=0.9 undamped, 3 t0: exact %lld switches mu_s %.12f | dopri5 1e-11 %lld switches mu_s %.12f\n",
               (long long)a.switches, a.mu_s, (long long)b.switches, b.mu_s);
   EXPECT_LT(a.switches, 1.5 * b.switches);

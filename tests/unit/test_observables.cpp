@@ -14,7 +14,7 @@ using namespace sb;
 
 namespace {
 
-Scene small() {
+Scene observed_scene() {
   Scene s;
   set_scene_field(s, "N", "20");
   set_scene_field(s, "length", "0.4cm");
@@ -26,7 +26,7 @@ Scene small() {
 }
 
 TEST(Observables, EachReachesTheRunsTheStatisticsAndTheJson) {
-  const Scene s = small();
+  const Scene s = observed_scene();
   const auto r = run_ensemble(s);
   const auto j = ensemble_json(s, r, "test");
   for (const auto& o : observables()) {

@@ -15,12 +15,12 @@ using namespace sb;
 
 namespace {
 
-struct Outcome {
+struct ScreenRun {
   State state;
   double mu_s, mu_d;
 };
 
-Outcome run(const Scene& sc, bool screen) {
+ScreenRun run(const Scene& sc, bool screen) {
   const Chain c = build_chain(sc, 0);
   State s = State::at_rest(c);
   FrictionObserverConfig cfg;
@@ -45,7 +45,7 @@ void expect_screen_changes_nothing(const std::string& pattern, const std::string
   set_scene_field(sc, "dt", "4e-7s");
   set_scene_field(sc, "duration", "1.4t0");
   sc.seed = 5;
-  const Outcome a = run(sc, true), b = run(sc, false);
+  const ScreenRun a = run(sc, true), b = run(sc, false);
   EXPECT_GT(b.state.switches, 12) << "the run must reach its dynamic phase";
   EXPECT_EQ(a.state.switches, b.state.switches);
   EXPECT_EQ(a.state.steps, b.state.steps);

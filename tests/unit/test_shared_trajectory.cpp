@@ -16,7 +16,7 @@ using namespace sb;
 
 namespace {
 
-Scene base(const std::string& pattern, const std::string& method) {
+Scene shared_scene(const std::string& pattern, const std::string& method) {
   Scene s;
   set_scene_field(s, "N", "48");
   set_scene_field(s, "length", "0.96cm");
@@ -79,7 +79,7 @@ void expect_same_as_own_runs(const std::vector<Scene>& scenes) {
 }  // namespace
 
 TEST(SharedTrajectory, EventMethodWithGroovesMatchesOwnRuns) {
-  expect_same_as_own_runs(variants(base("periodic:3,3", "event"), "2s"));  // 3 t0 = 2.4 s
+  expect_same_as_own_runs(variants(shared_scene("periodic:3,3", "event"), "2s"));  // 3 t0 = 2.4 s
 }
 
 // Grooves of ten blocks: the loading phase's quiet phases are long, so several views take the
@@ -87,7 +87,7 @@ TEST(SharedTrajectory, EventMethodWithGroovesMatchesOwnRuns) {
 // samples that may hold its peak; they look in their own order and must each get the doubles of
 // their own runs.
 TEST(SharedTrajectory, EventMethodWithLongGroovesMatchesOwnRuns) {
-  Scene b = base("periodic:10,10", "event");
+  Scene b = shared_scene("periodic:10,10", "event");
   set_scene_field(b, "N", "120");
   set_scene_field(b, "length", "2.4cm");
   set_scene_field(b, "duration", "2t0");
@@ -98,17 +98,17 @@ TEST(SharedTrajectory, EventMethodWithLongGroovesMatchesOwnRuns) {
 }
 
 TEST(SharedTrajectory, EventMethodSmoothMatchesOwnRuns) {
-  expect_same_as_own_runs(variants(base("smooth", "event"), "1s"));  // 3 t0 = 1.2 s
+  expect_same_as_own_runs(variants(shared_scene("smooth", "event"), "1s"));  // 3 t0 = 1.2 s
 }
 
 TEST(SharedTrajectory, UncoupledSolverMatchesOwnRuns) {
-  Scene b = base("periodic:2,1", "event");
+  Scene b = shared_scene("periodic:2,1", "event");
   set_scene_field(b, "k_int_scale", "0");
   expect_same_as_own_runs(variants(b, "1s"));  // 3 t0 = 1.8 s
 }
 
 TEST(SharedTrajectory, Rk4MatchesOwnRuns) {
-  Scene b = base("periodic:2,2", "rk4");
+  Scene b = shared_scene("periodic:2,2", "rk4");
   set_scene_field(b, "N", "12");
   set_scene_field(b, "length", "0.24cm");
   set_scene_field(b, "dt", "4e-7s");
@@ -121,7 +121,7 @@ TEST(SharedTrajectory, Rk4MatchesOwnRuns) {
 }
 
 TEST(SharedTrajectory, DifferentPhysicsOrStopRuleIsNotShared) {
-  Scene a = base("smooth", "event");
+  Scene a = shared_scene("smooth", "event");
   Scene b = a, c = a;
   set_scene_field(b, "tol", "1e-10");
   set_scene_field(c, "stop_after_mu_s", "true");

@@ -3,7 +3,6 @@
 // the checkpoint's resume (a truncated last line, lost units, a foreign checkpoint), and a unit's
 // record equal to its repetition run directly.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "springblock/sweep/checkpoint.hpp"
 #include "springblock/sweep/expand.hpp"
 #include "springblock/sweep/units.hpp"
+#include "temp_dir.hpp"
 
 namespace {
 
@@ -129,14 +129,8 @@ TEST(SweepExpand, ErrorsNameTheFieldAndTheLine) {
   EXPECT_NE(error_of("[base]\nN = = 2\n").find("not valid TOML"), std::string::npos);
 }
 
-struct TempDir {
-  std::filesystem::path path = std::filesystem::temp_directory_path() / ("sb_sweep_" + std::to_string(::getpid()));
-  TempDir() { std::filesystem::create_directories(path); }
-  ~TempDir() { std::filesystem::remove_all(path); }
-};
-
 TEST(SweepCheckpoint, ResumeKeepsFinishedUnitsDropsACutLineAndReportsLostOnes) {
-  TempDir dir;
+  sbtest::TempDir dir("sb_sweep_");
   const std::string path = (dir.path / "c.checkpoint").string();
   {
     sb::sweep::Checkpoint cp(path, "abc", 4, false);

@@ -3,7 +3,6 @@
 // checkpoint, byte for byte the file the records held in memory would give (each scene's
 // statistics over its repetitions in repetition order, whatever order the units came in).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,23 +17,17 @@
 #include "springblock/sweep/expand.hpp"
 #include "springblock/sweep/streamed_results.hpp"
 #include "springblock/sweep/units.hpp"
+#include "temp_dir.hpp"
 
 namespace {
 
-const char* kToml = R"([base]
+const char* kResultsToml = R"([base]
 N = 20
 duration = "3t0"
 reps = 5
 [axes]
 pattern = ["smooth", "periodic:3,1", "hierarchical:2,2"]
 )";
-
-struct TempDir {
-  std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("sb_sweep_results_" + std::to_string(::getpid()));
-  TempDir() { std::filesystem::create_directories(path); }
-  ~TempDir() { std::filesystem::remove_all(path); }
-};
 
 // A made-up record with every field a scene line reads: doubles of all sizes, a null value.
 nlohmann::json fake_record(int unit, int scene, int rep) {
@@ -97,8 +90,8 @@ std::string text_of(const std::string& path) {
 }
 
 TEST(SweepResults, StreamedFileEqualsTheInMemoryOneWhateverTheFinishingOrder) {
-  TempDir dir;
-  const auto scenes = sb::sweep::expand(sb::sweep::parse_toml(kToml, "s.toml"));
+  sbtest::TempDir dir("sb_sweep_results_");
+  const auto scenes = sb::sweep::expand(sb::sweep::parse_toml(kResultsToml, "s.toml"));
   const auto units = sb::sweep::make_units(scenes);
   std::vector<int> order(units.size());
   for (int i = 0; i < static_cast<int>(order.size()); ++i) order[i] = i;
@@ -131,8 +124,8 @@ TEST(SweepResults, StreamedFileEqualsTheInMemoryOneWhateverTheFinishingOrder) {
 }
 
 TEST(SweepResults, ResumedRecordsCompleteTheirScenesBeforeThePartialFileStarts) {
-  TempDir dir;
-  const auto scenes = sb::sweep::expand(sb::sweep::parse_toml(kToml, "s.toml"));
+  sbtest::TempDir dir("sb_sweep_results_");
+  const auto scenes = sb::sweep::expand(sb::sweep::parse_toml(kResultsToml, "s.toml"));
   const auto units = sb::sweep::make_units(scenes);
   const std::string out = (dir.path / "r.jsonl").string();
   std::map<int, nlohmann::json> records;

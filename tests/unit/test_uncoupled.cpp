@@ -11,14 +11,10 @@
 #include <vector>
 
 #include "hand_chain.hpp"
+#include "null_observer.hpp"
 #include "springblock/integrate/methods/event_driven.hpp"
 
 namespace {
-
-class NullObserver final : public sb::Observer {
- public:
-  void sample(const sb::Chain&, const sb::State&) override {}
-};
 
 // Records every sample's friction sum, reading only friction forces (so the exact solver may
 // leave moving blocks unevaluated) or everything (so it must evaluate them).
@@ -126,7 +122,7 @@ TEST(Uncoupled, CreepingBlockHasNoSecondEvent) {
   c.f_kinetic = {1.8};
   c.F_load = 2.0;
   sb::State s = sb::State::at_rest(c);
-  NullObserver obs;
+  sbtest::NullObserver obs;
   std::vector<double> log;
   sb::EventDriven ev(1e-9, true);
   ev.set_switch_log(&log);
@@ -145,7 +141,7 @@ TEST(Uncoupled, CascadeIsReported) {
   sb::Chain c = uncoupled(1e4);
   c.f_kinetic[1] = 3.0;  // f_static[1] = 1.86
   sb::State s = sb::State::at_rest(c);
-  NullObserver obs;
+  sbtest::NullObserver obs;
   sb::EventDriven ev(1e-9, true);
   EXPECT_THROW(ev.run(c, s, 1.0, 1e-3, obs), std::runtime_error);
 }
