@@ -9,8 +9,7 @@ except what the claim's own parameters state (max=, tol=, value=)."""
 import math
 import statistics
 
-from scipy.stats import norm
-
+from . import stats
 from .inputs import statistic, table_target
 
 REGISTRY = {}   # claim_id -> (function, targets: tuple of names or callable(params) -> names)
@@ -236,7 +235,7 @@ def independent_blocks_not_below_micro(c, p, v):
         # A block's micro mu_d is clipped to its mu_s (the simulator's draw policy), so the micro
         # mean is E[min(mu_d, mu_s)] = r - E[(r - mu_s)+] with mu_s ~ N(mu_s_m, sigma_s).
         zz = (r - th["mu_s_m"]) / th["sigma_s"]
-        micro = r - th["sigma_s"] * (zz * norm.cdf(zz) + norm.pdf(zz))
+        micro = r - th["sigma_s"] * (zz * stats.normal_cdf(zz) + stats.normal_pdf(zz))
         c.ordered((m, s), (micro, 0.0), f"r={r:g}: K_int=0 mu_d >= micro mean {micro:.4f}", "mu_d")
 
 
