@@ -18,6 +18,7 @@
 #include "springblock/errors.hpp"
 #include "springblock/integrate/methods/rk4.hpp"
 #include "springblock/scene.hpp"
+#include "gsl_eigen.hpp"
 
 using namespace sb;
 
@@ -54,11 +55,11 @@ Eigen::Vector2d exact(const Chain& c, double gamma, double t) {
   const Eigen::Vector2d ks(c.blocks.K_s[0], c.blocks.K_s[1]);
   const Eigen::Vector2d a = K.ldlt().solve(ks * c.v_slider);
   const Eigen::Vector2d b = K.ldlt().solve(-gamma * (M * a));
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> modes(K, M);
+  const sbtest::SymmetricEigen modes = sbtest::symmetric_eigen(K, M);
   Eigen::Vector2d u = a * t + b;
   for (int j = 0; j < 2; ++j) {
-    const Eigen::Vector2d phi = modes.eigenvectors().col(j);
-    const double w2 = modes.eigenvalues()(j), q0 = -phi.dot(M * b), dq0 = -phi.dot(M * a);
+    const Eigen::Vector2d phi = modes.vectors.col(j);
+    const double w2 = modes.values[j], q0 = -phi.dot(M * b), dq0 = -phi.dot(M * a);
     const double wd = std::sqrt(w2 - 0.25 * gamma * gamma);  // underdamped in these scenes
     const double q = std::exp(-0.5 * gamma * t) *
                      (q0 * std::cos(wd * t) + (dq0 + 0.5 * gamma * q0) / wd * std::sin(wd * t));
