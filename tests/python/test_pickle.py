@@ -83,7 +83,8 @@ def test_an_unpickled_scene_runs_bit_identically():
 
 
 def test_a_result_pickles_with_every_number():
-    # mu(t) every 0.1 ms: at the default spacing the series is millions of samples, 7 s of copying.
+    # mu(t) every 0.1 ms: at the default spacing the series is 1.6 million samples and this test
+    # took 7.7 s.
     scene = sb.Scene(N=30, reps=3, seed=4, slip_events=True, stress_times="1ms", sample_dt="0.1ms")
     result = sb.run(scene, series=True)
     back = copied(result)

@@ -35,7 +35,8 @@ inline SymmetricEigen symmetric_eigen(const Eigen::MatrixXd& K, const Eigen::Mat
   SymmetricEigen out{std::vector<double>(n), Eigen::MatrixXd(Eigen::Index(n), Eigen::Index(n))};
   for (std::size_t k = 0; k < n; ++k) {
     out.values[k] = gsl_vector_get(lambda, k);
-    for (std::size_t i = 0; i < n; ++i) out.vectors(Eigen::Index(i), Eigen::Index(k)) = gsl_matrix_get(V, i, k);
+    for (std::size_t i = 0; i < n; ++i)
+      out.vectors(Eigen::Index(i), Eigen::Index(k)) = gsl_matrix_get(V, i, k);
     const Eigen::VectorXd x = out.vectors.col(Eigen::Index(k));
     out.vectors.col(Eigen::Index(k)) /= std::sqrt(x.dot(M * x));
   }
