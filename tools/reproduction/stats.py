@@ -33,7 +33,7 @@ def sidak(alpha, m):
 
 def t_upper(p, nu):
     """t with P(T > t) = p for nu degrees of freedom (the normal quantile when nu is infinite)."""
-    return float(-ndtri(p)) if math.isinf(nu) else float(-stdtrit(nu, p))
+    return z_upper(p) if math.isinf(nu) else float(-stdtrit(nu, p))
 
 
 def z_upper(p):
@@ -43,7 +43,7 @@ def z_upper(p):
 
 def normal_within(x):
     """P(|Z| <= x) for a standard normal Z."""
-    return float(2.0 * ndtr(x) - 1.0)
+    return 2.0 * normal_cdf(x) - 1.0
 
 
 def normal_cdf(x):
