@@ -211,7 +211,7 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   // A stretch feeds the statistics, the series and the stress snapshots alike (record_stretch),
   // so keeping mu(t) or taking snapshots never changes mu_s or mu_d (served one by one instead,
   // they would differ in the last bits: FrictionObserver.KeepingTheSeriesChangesNoStatistic*).
-  if (n <= 0 || contact_runs_.empty()) return 0;
+  if (n <= 0 || contact_runs_.empty() || wants_stop()) return 0;
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
   const double t_first = t_of(k0);
   const double *a = f.a, *b = f.b;
@@ -223,7 +223,7 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
                                        : block_order_totals(contact_runs_, s, a, b, t_first);
   const double A = sum.A, B = sum.B, As = sum.As, Bs = sum.Bs, t_sign = sum.t_sign;
   const int n_sliding = sum.n_sliding;
-  long m = n;
+  long m = std::min(n, kMaxAffineSamples);
   while (m > 0 && t_of(k0 + m - 1) >= t_sign) --m;  // usually none: forces rarely change sign
   if (m <= 0) return 0;
   const double inv = 1.0 / cfg_.F_load;
