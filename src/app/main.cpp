@@ -3,7 +3,6 @@
 // progress and output files.
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -21,6 +20,7 @@
 #include "work_table.hpp"
 #include "springblock/ensemble.hpp"
 #include "springblock/errors.hpp"
+#include "springblock/input_file.hpp"
 #include "springblock/io.hpp"
 #include "springblock/scene.hpp"
 #include "springblock/scene_theory.hpp"
@@ -42,11 +42,10 @@ struct TheoryArgs {
 };
 
 sb::Scene load_scene_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw sb::InputError("scene", "cannot open scene file '" + path + "'");
+  const std::string text = sb::read_input_file(path, "scene", "scene file");
   nlohmann::json j;
   try {
-    in >> j;
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
     throw sb::InputError("scene", "'" + path + "' is not valid JSON: " + e.what());
   }

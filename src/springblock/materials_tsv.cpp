@@ -1,10 +1,10 @@
 // Materials files: tab-separated columns with a header. Parsed by hand: the format is a header,
 // rows of numbers and comment lines, and every message must name the path, line and column.
 #include <charconv>
-#include <fstream>
 #include <sstream>
 
 #include "springblock/errors.hpp"
+#include "springblock/input_file.hpp"
 #include "springblock/materials.hpp"
 
 namespace sb {
@@ -75,11 +75,7 @@ BlockMaterials parse_materials_tsv(const std::string& text, const std::string& p
 }
 
 BlockMaterials read_materials_tsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("materials", "cannot read materials file '" + path + "'");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_materials_tsv(text.str(), path);
+  return parse_materials_tsv(read_input_file(path, "materials", "materials file"), path);
 }
 
 }  // namespace sb

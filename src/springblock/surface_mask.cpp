@@ -94,7 +94,11 @@ std::vector<std::uint8_t> read_mask_file(const std::string& path) {
   if (!in) refuse_mask("cannot read mask file '" + path + "': " + std::strerror(errno));
   std::vector<std::uint8_t> mask;
   MaskFileReader reader(path);
-  for (std::istreambuf_iterator<char> it(in), end; it != end; ++it) reader.take(*it, mask);
+  try {  // read as it streams: a file too long or not a mask is refused at once
+    for (std::istreambuf_iterator<char> it(in), end; it != end; ++it) reader.take(*it, mask);
+  } catch (const std::ios_base::failure& e) {
+    refuse_mask("cannot read mask file '" + path + "': " + e.what());
+  }
   if (in.bad()) refuse_mask("cannot read mask file '" + path + "': a read failed");
   if (mask.empty())
     refuse_mask("mask file '" + path + "' holds no 0 or 1 character; " + kAllowed +

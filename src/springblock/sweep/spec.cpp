@@ -1,10 +1,9 @@
 // What the TOML and JSON readers share: dispatch on the extension, the ranges, and the check of
 // a section's entries (scene values are scalars; axes are lists or ranges).
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "springblock/errors.hpp"
+#include "springblock/input_file.hpp"
 #include "springblock/sweep/spec.hpp"
 
 namespace sb::sweep {
@@ -14,14 +13,11 @@ std::string where(const std::string& path, int line) {
 }
 
 Spec read_spec(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("sweep", "cannot open sweep file '" + path + "'");
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string text = read_input_file(path, "sweep", "sweep file");
   const auto dot = path.rfind('.');
   const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
-  if (ext == ".toml") return parse_toml(text.str(), path);
-  if (ext == ".json") return parse_json(text.str(), path);
+  if (ext == ".toml") return parse_toml(text, path);
+  if (ext == ".json") return parse_json(text, path);
   throw InputError("sweep", "'" + path + "' must end in .toml or .json (its format)");
 }
 
