@@ -86,6 +86,19 @@ nlohmann::json provenance(const std::string& command_line) {
 
 namespace {
 
+// Repetition 0's stress snapshots, one entry per time asked for, in time order.
+nlohmann::json stress_json(const std::vector<StressSnapshot>& snapshots) {
+  auto numbers = [](const std::vector<double>& xs) {
+    nlohmann::json a = nlohmann::json::array();
+    for (double x : xs) a.push_back(json_number(x));
+    return a;
+  };
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& s : snapshots)
+    out.push_back({{"t_s", json_number(s.t)}, {"f_over_Fn", numbers(s.f_over_Fn)}, {"sigma_over_P", numbers(s.sigma_over_P)}});
+  return out;
+}
+
 // An observable's statistic; one over no repetitions has null mean, std and sem, and says why.
 nlohmann::json statistic_json(const Scene& scene, const EnsembleResult& r, const Observable& o) {
   nlohmann::json j = r.*o.statistic;
@@ -120,6 +133,7 @@ nlohmann::json ensemble_json(const Scene& scene, const EnsembleResult& r, const 
   for (const auto& o : observables())
     if (o.summary != Summary::None) j[o.name] = statistic_json(scene, r, o);
   if (auto slips = slip_event_summary(r); !slips.is_null()) j["slip_events"] = std::move(slips);
+  if (!r.runs.empty() && !r.runs.front().stress.empty()) j["stress"] = stress_json(r.runs.front().stress);
   j.update(schema_entries(scene_json));
   return j;
 }

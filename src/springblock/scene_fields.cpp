@@ -1,5 +1,6 @@
 #include "springblock/scene_fields.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -214,7 +215,7 @@ std::vector<Entry> run_and_extraction_entries() {
      [](Scene& s, auto& k, auto& v) { s.run.stop_after_mu_s = boolean(k, v); }},
     {{"slip_events", "record every repetition's slip events: start, duration, blocks, episodes and total slip (true/false, default false)", "true"},
      [](Scene& s, auto& k, auto& v) { s.observe.slip_events = boolean(k, v); }},
-    {{"stress_times", "comma-separated times for per-block stress snapshots of repetition 0 (default none)", "0.2s,0.3s"},
+    {{"stress_times", "comma-separated times for per-block stress snapshots of repetition 0, taken in time order (default none)", "0.2s,0.3s"},
      [](Scene& s, auto& k, auto& v) {
        s.observe.stress_times_s.clear();
        std::size_t start = 0;
@@ -225,6 +226,9 @@ std::vector<Entry> run_and_extraction_entries() {
          if (comma == std::string::npos) break;
          start = comma + 1;
        }
+       // The observer takes them in time order: out of order, an earlier time would be taken at
+       // the later one's sample.
+       std::sort(s.observe.stress_times_s.begin(), s.observe.stress_times_s.end());
      }},
   };
 }

@@ -61,6 +61,7 @@ void to_json(nlohmann::json& j, const Scene& s) {
                      {"reps", s.reps},
                      {"seed", s.seed}};
   if (s.pattern.kind == SurfaceKind::Mask) j["pattern_mask"] = mask_record(s.pattern);
+  if (!s.observe.stress_times_s.empty()) j["stress_times_s"] = s.observe.stress_times_s;
 }
 
 nlohmann::json schema_entries(const nlohmann::json& scene) {
