@@ -38,9 +38,10 @@ void add_space_options(CLI::App* cmd, design::DesignSpace& s, DesignArgs& a) {
                   "given: the surfaces to choose among, each as --pattern takes it (e.g. mask:@a.txt mask:0110 periodic:3,1)");
   cmd->add_option("--pattern", a.pattern, "not an option of design: it chooses the surface (see --family given)");
   cmd->add_option("--min-np", s.min_np, "periodic: smallest pawl size n_p in blocks (default 1)");
-  cmd->add_option("--max-np", s.max_np, "periodic: largest pawl size n_p (default 60)");
+  cmd->add_option("--max-np", a.text.max_np, "periodic: largest pawl size n_p (default 60, or N if smaller)");
   cmd->add_option("--min-ng", s.min_ng, "periodic/hierarchical: smallest groove size n_g or G1 (default 1)");
-  cmd->add_option("--max-ng", s.max_ng, "periodic/hierarchical: largest groove size n_g or G1 (default 60)");
+  cmd->add_option("--max-ng", a.text.max_ng,
+                  "periodic/hierarchical: largest groove size n_g or G1 (default 60, or N if smaller)");
   cmd->add_option("--levels", s.levels, "hierarchical: number of levels (default 2)");
   cmd->add_option("--factors", s.factors, "hierarchical: allowed ratios G_k/G_{k+1} (default 2,3,4,5,6,8,10)")->delimiter(',');
   cmd->add_option("--min-fraction", s.min_fraction, "random: smallest groove fraction (default 0.1)");

@@ -61,9 +61,9 @@ const std::map<std::string, Setter>& options() {
       {"minimise", [](Q&, T& t, H v) { t.minimise = word_of("minimise", v); }},
       {"maximise", [](Q&, T& t, H v) { t.maximise = word_of("maximise", v); }},
       {"min_np", [](Q& q, T&, H v) { q.space.min_np = int_of("min_np", v); }},
-      {"max_np", [](Q& q, T&, H v) { q.space.max_np = int_of("max_np", v); }},
+      {"max_np", [](Q&, T& t, H v) { t.max_np = int_of("max_np", v); }},
       {"min_ng", [](Q& q, T&, H v) { q.space.min_ng = int_of("min_ng", v); }},
-      {"max_ng", [](Q& q, T&, H v) { q.space.max_ng = int_of("max_ng", v); }},
+      {"max_ng", [](Q&, T& t, H v) { t.max_ng = int_of("max_ng", v); }},
       {"levels", [](Q& q, T&, H v) { q.space.levels = int_of("levels", v); }},
       {"factors", [](Q& q, T&, H v) {
          q.space.factors.clear();

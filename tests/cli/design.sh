@@ -87,6 +87,11 @@ bad levels --family hierarchical --levels 0
 bad target_mu_d --target-mu-d 0.7:0.5
 bad target_ratio --target-ratio abc
 bad verify_reps --verify-reps 1
+# On a chain shorter than 60 blocks the size bounds left unset stop at N (not refused as 60 > N).
+"$sb" design --N 20 --length 0.4cm --target-mu-s 0.7 --verify-reps 2 --verify-max-reps 2 --top 1 --json \
+  >"$dir/short.json" 2>"$dir/short.err" || { echo "FAIL design on N = 20: $(cat "$dir/short.err")"; fail=1; }
+"$py" -c "import json,sys; b = json.load(open(sys.argv[1]))['search']['bounds']; assert (b['max_np'], b['max_ng']) == (20, 20), b" \
+  "$dir/short.json" || { echo "FAIL design's default bounds on N = 20"; fail=1; }
 err=$("$sb" design --N 0 --target-mu-s 0.6 2>&1 >/dev/null)
 [ $? -eq 2 ] && grep -qF "invalid N" <<<"$err" || { echo "FAIL --N 0 (a field shared with run): $err"; fail=1; }
 err=$("$sb" design "${chain[@]}" 2>&1 >/dev/null)

@@ -1,5 +1,7 @@
 #include "springblock/design/query_text.hpp"
 
+#include <algorithm>
+
 #include "springblock/errors.hpp"
 #include "springblock/materials.hpp"
 
@@ -24,6 +26,8 @@ void complete_query(Query& q, const QueryText& t) {
           "design searches the surface, and a contact column or segment would override every candidate's pattern; "
           "leave contact out of the materials");
   q.space.family = parse_family(t.family);
+  q.space.max_np = t.max_np.value_or(std::min(kDefaultMaxSize, q.base.geometry.N));
+  q.space.max_ng = t.max_ng.value_or(std::min(kDefaultMaxSize, q.base.geometry.N));
   if (!t.target_mu_s.empty()) q.target.mu_s = parse_interval("target_mu_s", t.target_mu_s);
   if (!t.target_mu_d.empty()) q.target.mu_d = parse_interval("target_mu_d", t.target_mu_d);
   if (!t.target_ratio.empty()) q.target.ratio = parse_interval("target_ratio", t.target_ratio);

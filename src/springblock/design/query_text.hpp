@@ -2,6 +2,7 @@
 // The parts of a design query a user gives as words: the family, the candidates, the target
 // intervals and the goal. The command line's options and Python's keywords are turned into a
 // Query here, so both check them the same way and refuse them with the same messages.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,12 @@ struct QueryText {
   std::vector<std::string> candidates;  // family given: each as a pattern is written
   std::string target_mu_s, target_mu_d, target_ratio;  // "X", "LO:HI", ">=X", "<=X"; "" = unconstrained
   std::string minimise, maximise;                      // "mu_s", "mu_d", "ratio" or ""
+  // The largest pawl and groove sizes when given; else kDefaultMaxSize, or N on a shorter chain.
+  std::optional<int> max_np, max_ng;
 };
+
+// The paper's largest feature, 60 blocks: the default upper bound of n_p and n_g (G1).
+inline constexpr int kDefaultMaxSize = 60;
 
 // Completes `q`, whose base scene fields, space bounds and search options are set, with `text`,
 // and validates it. Throws InputError naming the field and what it allows.
