@@ -33,9 +33,12 @@ add_test(NAME browser_docs
 set_tests_properties(browser_docs PROPERTIES LABELS "docs;browser" FIXTURES_REQUIRED docs_site TIMEOUT 300)
 
 # The report of the configured tier, as `make reproduce-all` writes it (figures and report drawn from
-# the reproduction fixtures' results), then opened in Chromium scrolled to its first table.
+# the reproduction fixtures' results), then opened in Chromium scrolled to its first table. The
+# figures are independent targets, drawn in parallel on the cores the reproduction lock holds.
 if(SPRINGBLOCK_BUILD_REPRODUCE)
-  add_test(NAME report_html COMMAND ${CMAKE_COMMAND} --build ${PROJECT_BINARY_DIR} --target report)
+  cmake_host_system_information(RESULT report_jobs QUERY NUMBER_OF_LOGICAL_CORES)
+  add_test(NAME report_html
+           COMMAND ${CMAKE_COMMAND} --build ${PROJECT_BINARY_DIR} --target report --parallel ${report_jobs})
   set_tests_properties(report_html PROPERTIES LABELS report FIXTURES_SETUP report_html
                        FIXTURES_REQUIRED repro_summary RESOURCE_LOCK reproduction_cores TIMEOUT 1500)
   add_test(NAME browser_report
