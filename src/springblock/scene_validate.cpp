@@ -148,7 +148,9 @@ void validate_rk4_step(const Scene& s) {
                                  printed(h_damped) + " s (overdamped modes need h * gamma <= 2.785)");
   }
   const double steps = s.duration() / r.dt_s;
-  require(steps <= kMaxTimes, "dt", r.dt_s, "a run of at most 1e13 steps (duration / dt)");
+  require(steps <= kMaxTimes, "dt", r.dt_s,
+          "[duration / 1e13 = " + printed(s.duration() / kMaxTimes) + " s, ...) (at most 1e13 RK4 steps over the run; "
+          "duration = " + printed(s.duration()) + " s): raise --dt or shorten --duration");
 }
 
 // Whether the run's times stay apart in double arithmetic. Samples come every sample_dt, RK4
@@ -160,8 +162,12 @@ void validate_rk4_step(const Scene& s) {
 // from a vanishing mass) fails the same test.
 void validate_resolution(const Scene& s) {
   const double T = s.duration();
+  // The duration is often a multiple of t0, which the velocity, the load or the stiffnesses set:
+  // the message names both, since the field the user changed may be one of those.
   require(T / s.run.sample_dt_s <= kMaxTimes, "sample_dt", s.run.sample_dt_s,
-          "a run of at most 1e13 samples (duration / sample_dt, duration = " + printed(T) + " s)");
+          "[duration / 1e13 = " + printed(T / kMaxTimes) + " s, ...) (at most 1e13 samples over the run; duration = " +
+              printed(T) + " s, t0 = " + printed(s.t0_s()) +
+              " s from the velocity, load and stiffnesses): raise --sample-dt or shorten --duration");
   if (s.run.method == Method::RK4) return;
   const double rate = std::max(std::sqrt(mode_band(s).w2_hi), s.material.gamma_per_s);
   if (!(rate * T <= kExactStepRadians * kMaxTimes))
