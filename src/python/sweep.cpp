@@ -31,6 +31,8 @@ py::dict report_dict(const sweep::Report& r, const sweep::Resumed& resumed) {
 py::dict sweep(const std::string& file, const std::string& text, const std::string& label, const std::string& out,
                const std::string& units, int threads, bool resume, const py::object& progress,
                const std::string& command_line) {
+  // The command line's range for sweep --threads.
+  require(threads >= 0 && threads <= 4096, "threads", "threads = " + std::to_string(threads) + " is outside [0, 4096]");
   if (file.empty() && out.empty())
     throw InputError("out", "a sweep given as a dict needs out=PATH: its results go there, its checkpoint beside them");
   const sweep::Spec spec = file.empty() ? sweep::parse_json(text, label) : sweep::read_spec(file);

@@ -173,6 +173,14 @@ def test_bad_input_names_the_field_and_writes_nothing(tmp_path, spec, out, field
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("threads", [-1, 4097])
+def test_a_thread_count_outside_the_command_lines_range_is_refused(tmp_path, threads):
+    with pytest.raises(sb.InputError) as e:
+        sb.sweep({"base": {"N": 20, "reps": 1}}, tmp_path / "x.jsonl", threads=threads)
+    assert e.value.field == "threads" and "[0, 4096]" in str(e.value)
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_a_results_file_of_the_command_line_reads_back(tmp_path, cli_results):
     path = tmp_path / "cli.jsonl"
     result = sb.SweepResult(path)
