@@ -21,6 +21,8 @@ long long integer(const std::string& key, const std::string& text) {
   const char* b = text.data();
   const char* e = b + text.size();
   auto [p, ec] = std::from_chars(b, e, x);
+  if (ec == std::errc::result_out_of_range && p == e)
+    throw InputError(key, "'" + text + "' is too large a whole number (beyond +-9.2e18)");
   if (ec != std::errc() || p != e)
     throw InputError(key, "'" + text + "' is not a whole number");
   return x;
@@ -136,9 +138,12 @@ std::vector<Entry> ensemble_entries() {
      }},
     {{"seed", "seed of repetition 0's stream (default 1); fixes the result at any thread count", "7"},
      [](Scene& s, auto& k, auto& v) {
-       auto n = integer(k, v);
-       if (n < 0) throw InputError(k, "seed = " + v + " must be >= 0");
-       s.seed = static_cast<std::uint64_t>(n);
+       // Every 64-bit seed, as results record them.
+       std::uint64_t n = 0;
+       const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+       if (ec != std::errc() || end != v.data() + v.size())
+         throw InputError(k, "seed = " + v + " is not a whole number in [0, 18446744073709551615]");
+       s.seed = n;
      }},
     {{"threads", "threads over repetitions (default 0 = all cores: OMP_NUM_THREADS if set, else every hardware thread)", "2"},
      [](Scene& s, auto& k, auto& v) {

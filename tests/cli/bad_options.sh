@@ -47,7 +47,12 @@ expect_error "--density 1e-300g/cm3" duration "fastest rate inf" "at most 7.5e12
 expect_error "--density 1e-300g/cm3 --k-int-scale 0" duration "fastest rate inf" "at most 7.5e12 rad"
 expect_error "--peak-drop 2" peak_drop "value 2" "(0, 1]"
 expect_error "--threads 5000" threads "5000" "[0, 1024]"
-expect_error "--seed -3" seed "-3" ">= 0"
+expect_error "--seed -3" seed "-3" "[0, 18446744073709551615]"
+expect_error "--seed 18446744073709551616" seed "18446744073709551616" "[0, 18446744073709551615]"
+expect_error "--N 99999999999999999999" N "99999999999999999999" "too large a whole number"
+# The largest seed is a seed (results record 64-bit seeds).
+"$sb" run --N 10 --reps 1 --duration 2t0 --seed 18446744073709551615 --json 2>/dev/null | grep -q '"seed":18446744073709551615' ||
+  { echo "FAIL --seed 18446744073709551615 did not run with that seed"; fail=1; }
 expect_error "--pressure 0Pa" pressure "value 0" "(0, 1e12 Pa)"
 expect_error "--shear-modulus 0Pa" shear_modulus "value 0" "(0, 1e13 Pa)"
 expect_error "--young-modulus 1e14Pa" young_modulus "1e+14" "(0, 1e13 Pa)"
