@@ -50,6 +50,10 @@ Spec build_spec(const Tree& t, const std::string& path) {
   Spec s;
   s.path = path;
   if (!t.root.is_object()) throw InputError("sweep", "'" + path + "' must hold one table/object");
+  // Nothing in it is a slip of the pen more often than a request for the default scene.
+  if (t.root.empty())
+    throw InputError("sweep", "'" + path + "' holds no base, scenes or axes; give at least one (an empty [base] "
+                              "runs the default scene)");
   for (auto& [section, value] : t.root.items()) {
     const std::string p = "/" + section;
     if (section == "base") {

@@ -58,6 +58,8 @@ bad toml $'[base]\nN = 30\n[axis]\nN = [1]' axis "line 3"
 bad toml $'[base]\nN = = 3' sweep "line 2"
 bad json $'{"base": {"N": 30,\n  "mu_d": "2.0,0.1"}}' mu_d "line 2"
 bad json $'{"base": {"N": 30},\n "axes": {"pattern": ["smooth",\n   "sinusoidal"]}}' pattern "line 2"
+bad toml '' sweep "holds no base, scenes or axes"
+bad json '{}' sweep "holds no base, scenes or axes"
 
 # An existing checkpoint is not overwritten without --resume.
 printf '{}\n' >"$dir/t3.jsonl.checkpoint"
