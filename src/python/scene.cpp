@@ -113,6 +113,9 @@ void bind_scene(py::module_& m) {
       .def("__eq__", [](const sb::Scene& a, const sb::Scene& b) { return scene_state_text(a) == scene_state_text(b); },
            py::is_operator(), "Equal when every field is: the same state, hence the same numbers when run.")
       .def("__hash__", [](const sb::Scene& s) { return py::hash(py::str(scene_state_text(s))); });
+  m.def("pattern_text", [](const py::handle& v) { return pattern_value(v).get<std::string>(); }, py::arg("pattern"),
+        "A pattern as the command line writes it: a string as it is, the blocks of a 1-D array, list or tuple of\n"
+        "0/1 or bool as 'mask:0110...'. Bad input raises InputError naming the pattern.");
   m.def("scene_fields", &field_table,
         "Every scene field: key (the keyword), help (meaning, default, units) and an example value.");
 }

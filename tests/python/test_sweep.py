@@ -186,3 +186,28 @@ def test_a_results_file_of_the_command_line_reads_back(tmp_path, cli_results):
     result = sb.SweepResult(path)
     assert result.report is None and result.header == cli_results[0] and len(result) == 3
     assert [r["mu_d_mean"] for r in result.records()] == [s["mu_d"]["mean"] for s in cli_results[1:]]
+
+
+def test_numpy_values_and_mask_arrays_in_a_dict_are_the_file_it_stands_for(tmp_path):
+    import numpy as np
+    mask = np.arange(20) % 4 != 3
+    text = "mask:" + "".join("1" if b else "0" for b in mask)
+    base = {"N": 20, "duration": "2t0", "velocity": "5cm/s", "reps": 2, "seed": 3}
+    plain = sb.sweep({"base": {**base, "pattern": text}, "axes": {"pressure": [1e6, 2e6]}}, tmp_path / "a.jsonl")
+    numpy = sb.sweep({"base": {**base, "pattern": mask}, "axes": {"pressure": np.array([1e6, 2e6])}},
+                     tmp_path / "b.jsonl")
+    strip = lambda r: [{k: v for k, v in row.items() if k not in VOLATILE} for row in r.run_records()]
+    assert strip(numpy) == strip(plain) and len(plain.run_records()) == 4
+    on_axis = sb.sweep({"base": base, "axes": {"pattern": [mask, "smooth"]}}, tmp_path / "c.jsonl")
+    assert [s["varied"]["pattern"] for s in on_axis.scenes] == [text, "smooth"]
+
+
+@pytest.mark.parametrize("base, field", [({"length": float("nan")}, "length"),
+                                         ({"pressure": float("inf")}, "pressure"),
+                                         ({"velocity": object()}, "velocity"),
+                                         ({"pattern": [0, 2, 1]}, "pattern")])
+def test_a_value_a_sweep_file_cannot_hold_is_refused_naming_its_field(tmp_path, base, field):
+    with pytest.raises(sb.InputError) as e:
+        sb.sweep({"base": {"N": 20, "reps": 1, **base}}, tmp_path / "x.jsonl")
+    assert e.value.field == field, str(e.value)
+    assert list(tmp_path.iterdir()) == []

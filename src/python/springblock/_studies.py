@@ -2,6 +2,8 @@
 (the code behind `springblock sweep` and `springblock design`), so they write the same files and
 give the same numbers; their results read back as records and DataFrames."""
 import json
+import math
+import numbers
 import os
 
 from springblock import _core
@@ -95,7 +97,7 @@ def sweep(spec, out=None, *, units=None, threads=0, resume=False, progress=None)
     arguments = {"spec": spec if not isinstance(spec, dict) else "<dict>", "out": out, "units": units,
                  "threads": threads or None, "resume": resume}
     if isinstance(spec, dict):
-        file, text = "", json.dumps(spec, default=_plain)
+        file, text = "", json.dumps(_sweep_dict(spec), allow_nan=False)
     elif isinstance(spec, (str, os.PathLike)):
         file, text = os.fspath(spec), ""
     else:
@@ -108,11 +110,48 @@ def sweep(spec, out=None, *, units=None, threads=0, resume=False, progress=None)
     return SweepResult(report["out"], report)
 
 
-def _plain(value):
-    """numpy numbers as the plain numbers json writes."""
-    if hasattr(value, "item"):
-        return value.item()
-    raise TypeError(f"{value!r} is not a number, string or boolean")
+def _input_error(field, message):
+    error = _core.InputError(f"invalid {field}: {message}")
+    error.field = field
+    return error
+
+
+def _plain(field, value):
+    """A sweep dict's value as the JSON a sweep file holds: numpy numbers and arrays as plain
+    numbers and lists; a number that is not finite is refused naming its field."""
+    if isinstance(value, dict):
+        return {k: _plain(k, v) for k, v in value.items()}
+    if isinstance(value, (str, bool)) or value is None:
+        return value
+    if hasattr(value, "tolist"):  # numpy arrays and scalars
+        return _plain(field, value.tolist())
+    if isinstance(value, (list, tuple)):
+        return [_plain(field, v) for v in value]
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real):
+        if not math.isfinite(value):
+            raise _input_error(field, f"{value!r} is not a finite number; give a number or a string with units")
+        return float(value)
+    raise _input_error(field, f"{value!r} is not a string, number, boolean, list or dict")
+
+
+def _sweep_dict(spec):
+    """The sweep file a dict stands for: each pattern (in base, in scenes, on an axis) given as
+    the blocks themselves becomes its mask text, as Scene(pattern=...) takes it."""
+    def scene(fields):
+        if not isinstance(fields, dict):
+            return fields  # the sweep parser says what it expected
+        return {k: _core.pattern_text(v) if k == "pattern" else v for k, v in fields.items()}
+    out = dict(spec)
+    if "base" in out:
+        out["base"] = scene(out["base"])
+    if isinstance(out.get("scenes"), (list, tuple)):
+        out["scenes"] = [scene(s) for s in out["scenes"]]
+    axes = out.get("axes")
+    if isinstance(axes, dict) and isinstance(axes.get("pattern"), (list, tuple)):
+        out["axes"] = {**axes, "pattern": [_core.pattern_text(p) for p in axes["pattern"]]}
+    return _plain("sweep", out)
 
 
 class DesignResult:
