@@ -9,7 +9,7 @@ other processes (``multiprocessing``, ``concurrent.futures``); every result has 
 """
 from springblock import _core
 from springblock._core import (InputError, Result, Scene, Series, Statistic, __version__, observables,
-                               scene_fields, theory)
+                               pattern_text, scene_fields, theory)
 from springblock._studies import DesignResult, SweepResult, design, sweep
 from springblock._tables import result_records, result_to_pandas
 
@@ -39,4 +39,4 @@ for _public in (DesignResult, SweepResult, design, sweep):
 del _public
 
 __all__ = ["DesignResult", "InputError", "Result", "Scene", "Series", "Statistic", "SweepResult", "__version__",
-           "design", "observables", "run", "run_many", "scene_fields", "sweep", "theory"]
+           "design", "observables", "pattern_text", "run", "run_many", "scene_fields", "sweep", "theory"]

@@ -32,7 +32,7 @@ expect_error() {
 expect_error fig1 "--method euler" method "'euler' is not one of: rk4, event"
 expect_error fig1 "--threads 5000" threads "[0, 1024]"
 expect_error fig1 "--threads abc" threads "whole number"
-expect_error fig1 "--seed -3" seed ">= 0"
+expect_error fig1 "--seed -3" seed "[0, 18446744073709551615]"
 expect_error fig1 "--only nope" only "no scene of fig1"
 expect_error fig1 "--layout zigzag" layout "pawl_first, symmetric"
 expect_error fig_p1 "" input "needs --input <tab_pat0.json>"
