@@ -61,9 +61,9 @@ class FrictionObserver final : public Observer {
                      const AffineForces& f) override;
   // The most samples one sample_affine takes. Its scans are linear in them, and the integrator
   // checks for an interrupt and the progress moves only between calls: with a small sample_dt a
-  // stretch can hold 10^12 samples. 2^24 is ~30 ms of scanning, and above any stretch of the
-  // paper's scenes (a quiet phase of 0.4 s holds 4e5 samples at 1 us), whose sums it leaves as
-  // they are.
+  // stretch can hold 10^12 samples. 2^24 is ~35 ms of scanning (~2 ns a sample, from the progress
+  // of a run at sample_dt 1e-11 s), and above the samples of any whole run the reproduction makes
+  // (at most 1.44e7), whose sums it leaves as they are.
   static constexpr long kMaxAffineSamples = 1L << 24;
   // The blocks whose forces changed, for the totals of per-block stretches.
   void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) override;
