@@ -1,16 +1,12 @@
 #include "springblock/surface_mask.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <utility>
 
 #include "springblock/errors.hpp"
 #include "springblock/fnv1a.hpp"
+#include "springblock/input_file.hpp"
 
 namespace sb {
 namespace {
@@ -88,18 +84,12 @@ class MaskFileReader {
 }  // namespace
 
 std::vector<std::uint8_t> read_mask_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) refuse_mask("cannot read mask file '" + path + "': it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) refuse_mask("cannot read mask file '" + path + "': " + std::strerror(errno));
   std::vector<std::uint8_t> mask;
   MaskFileReader reader(path);
-  try {  // read as it streams: a file too long or not a mask is refused at once
-    for (std::istreambuf_iterator<char> it(in), end; it != end; ++it) reader.take(*it, mask);
-  } catch (const std::ios_base::failure& e) {
-    refuse_mask("cannot read mask file '" + path + "': " + e.what());
-  }
-  if (in.bad()) refuse_mask("cannot read mask file '" + path + "': a read failed");
+  // Taken as it is read: a file too long, or not a mask, is refused at once.
+  read_input_chunks(path, "pattern", "mask file", [&](std::string_view chunk) {
+    for (char c : chunk) reader.take(c, mask);
+  });
   if (mask.empty())
     refuse_mask("mask file '" + path + "' holds no 0 or 1 character; " + kAllowed +
                 " (whitespace and lines starting with '#' are ignored)");

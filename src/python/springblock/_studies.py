@@ -101,9 +101,7 @@ def sweep(spec, out=None, *, units=None, threads=0, resume=False, progress=None)
     elif isinstance(spec, (str, os.PathLike)):
         file, text = os.fspath(spec), ""
     else:
-        error = _core.InputError(f"invalid sweep: a sweep is a file's path or a dict, got {type(spec).__name__}")
-        error.field = "sweep"
-        raise error
+        raise _input_error("sweep", f"a sweep is a file's path or a dict, got {type(spec).__name__}")
     report = _core.sweep(file, text, "sweep dict", os.fspath(out) if out is not None else "",
                          os.fspath(units) if units is not None else "", int(threads), bool(resume), progress,
                          _command_line("sweep", arguments))

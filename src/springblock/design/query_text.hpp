@@ -19,9 +19,6 @@ struct QueryText {
   std::optional<int> max_np, max_ng;
 };
 
-// The paper's largest feature, 60 blocks: the default upper bound of n_p and n_g (G1).
-inline constexpr int kDefaultMaxSize = 60;
-
 // Completes `q`, whose base scene fields, space bounds and search options are set, with `text`,
 // and validates it. Throws InputError naming the field and what it allows.
 void complete_query(Query& q, const QueryText& text);

@@ -20,11 +20,14 @@ enum class Family { Periodic, Hierarchical, Random, Given };
 std::string family_name(Family f);
 Family parse_family(const std::string& text);  // throws InputError("family")
 
+// The paper's largest feature, 60 blocks: the default upper bound of n_p and n_g (G1).
+inline constexpr int kDefaultMaxSize = 60;
+
 struct DesignSpace {
   Family family = Family::Periodic;
   // periodic: pawl and groove sizes in blocks, both ranges inclusive
-  // (The command line and Python set max_np and max_ng to 60, or N on a shorter chain, unless given.)
-  int min_np = 1, max_np = 60, min_ng = 1, max_ng = 60;
+  // (complete_query makes the upper ones N on a chain shorter than kDefaultMaxSize, unless given.)
+  int min_np = 1, max_np = kDefaultMaxSize, min_ng = 1, max_ng = kDefaultMaxSize;
   // hierarchical: `levels` levels; level 1's groove (= pawl) size G1 in [min_ng, max_ng], each
   // deeper level's G_{k+1} = G_k / f for a factor f of `factors` that divides G_k
   int levels = 2;

@@ -211,7 +211,7 @@ long FrictionObserver::sample_affine(const Chain& c, const State& s, long k0, do
   // A stretch feeds the statistics, the series and the stress snapshots alike (record_stretch),
   // so keeping mu(t) or taking snapshots never changes mu_s or mu_d (served one by one instead,
   // they would differ in the last bits: FrictionObserver.KeepingTheSeriesChangesNoStatistic*).
-  if (n <= 0 || contact_runs_.empty() || wants_stop()) return 0;
+  if (n <= 0 || contact_runs_.empty()) return 0;
   auto t_of = [&](long k) { return static_cast<double>(k) * dt; };
   const double t_first = t_of(k0);
   const double *a = f.a, *b = f.b;

@@ -61,9 +61,10 @@ class FrictionObserver final : public Observer {
                      const AffineForces& f) override;
   // The most samples one sample_affine takes. Its scans are linear in them, and the integrator
   // checks for an interrupt and the progress moves only between calls: with a small sample_dt a
-  // stretch can hold 10^12 samples. 2^24 is ~35 ms of scanning (~2 ns a sample, from the progress
-  // of a run at sample_dt 1e-11 s), and above the samples of any whole run the reproduction makes
-  // (at most 1.44e7), whose sums it leaves as they are.
+  // stretch can hold 10^12 samples. 2^24 is at most ~11 ms of scanning (a run at sample_dt
+  // 1e-10 s took 1.6e10 samples as stretches in 10.5 s, everything included), and above the
+  // samples of any whole run the reproduction makes (at most 1.44e7), whose sums it leaves as
+  // they are.
   static constexpr long kMaxAffineSamples = 1L << 24;
   // The blocks whose forces changed, for the totals of per-block stretches.
   void switched(const Chain& chain, const State& state, SwitchedBlocks blocks) override;
